@@ -1,0 +1,50 @@
+/**
+ * @file linalg.h
+ * @brief Internal: the small fixed-size linear algebra every module uses
+ *        (3-vectors, 3x3 matrices, the a0 I + a1 W + a2 W^2 series form).
+ *        Not part of the public API. Outputs may alias inputs.
+ */
+#ifndef SE23_LINALG_H
+#define SE23_LINALG_H
+
+#include "se23/types.h"
+
+/** Nonzero if all n values are finite. */
+int se23_all_finite(const se23_real_t *x, int n);
+
+se23_real_t se23_v3_dot(const se23_vec3_t *a, const se23_vec3_t *b);
+/** out = a x b */
+void se23_v3_cross(const se23_vec3_t *a, const se23_vec3_t *b, se23_vec3_t *out);
+/** out = a + s b */
+void se23_v3_axpy(const se23_vec3_t *a, se23_real_t s, const se23_vec3_t *b,
+                  se23_vec3_t *out);
+/** out = s a */
+void se23_v3_scale(const se23_vec3_t *a, se23_real_t s, se23_vec3_t *out);
+
+void se23_m3_identity(se23_mat3_t *out);
+/** out = A B */
+void se23_m3_mul(const se23_mat3_t *A, const se23_mat3_t *B, se23_mat3_t *out);
+/** out = A^T B */
+void se23_m3_mul_tn(const se23_mat3_t *A, const se23_mat3_t *B, se23_mat3_t *out);
+/** out = A B^T */
+void se23_m3_mul_nt(const se23_mat3_t *A, const se23_mat3_t *B, se23_mat3_t *out);
+void se23_m3_transpose(const se23_mat3_t *A, se23_mat3_t *out);
+/** out = A x */
+void se23_m3_mul_v3(const se23_mat3_t *A, const se23_vec3_t *x, se23_vec3_t *out);
+/** out = A^T x */
+void se23_m3_tmul_v3(const se23_mat3_t *A, const se23_vec3_t *x, se23_vec3_t *out);
+/** out = A + s B */
+void se23_m3_axpy(const se23_mat3_t *A, se23_real_t s, const se23_mat3_t *B,
+                  se23_mat3_t *out);
+/** out = v^ (skew matrix, v^ x = v cross x) */
+void se23_m3_skew(const se23_vec3_t *v, se23_mat3_t *out);
+se23_real_t se23_m3_det(const se23_mat3_t *A);
+
+/**
+ * out = a0 I + a1 W + a2 W^2 with W = phi^, using W^2 = phi phi^T - |phi|^2 I.
+ * Every SO(3) series (exp, J, H, K, J^-1) is of this form.
+ */
+void se23_m3_series(se23_real_t a0, se23_real_t a1, se23_real_t a2,
+                    const se23_vec3_t *phi, se23_mat3_t *out);
+
+#endif /* SE23_LINALG_H */

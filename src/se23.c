@@ -1,0 +1,243 @@
+/* SE_2(3): see se23.h. */
+#include "se23/se23.h"
+
+#include "argcheck.h"
+#include "linalg.h"
+#include "se23/so3.h"
+#include "se23_math.h"
+
+static void block_get(const se23_tangent_t *xi, int first, se23_vec3_t *out)
+{
+    for (int i = 0; i < 3; ++i) {
+        out->v[i] = xi->v[first + i];
+    }
+}
+
+static void block_set(se23_tangent_t *xi, int first, const se23_vec3_t *in)
+{
+    for (int i = 0; i < 3; ++i) {
+        xi->v[first + i] = in->v[i];
+    }
+}
+
+void se23_identity(se23_pose_t *T)
+{
+    se23_m3_identity(&T->R);
+    for (int i = 0; i < 3; ++i) {
+        T->v.v[i] = SE23_R(0);
+        T->p.v[i] = SE23_R(0);
+    }
+}
+
+void se23_compose(const se23_pose_t *A, const se23_pose_t *B, se23_pose_t *AB)
+{
+    se23_pose_t out;
+    se23_m3_mul(&A->R, &B->R, &out.R);
+    se23_m3_mul_v3(&A->R, &B->v, &out.v);
+    se23_m3_mul_v3(&A->R, &B->p, &out.p);
+    se23_v3_axpy(&out.v, SE23_R(1), &A->v, &out.v);
+    se23_v3_axpy(&out.p, SE23_R(1), &A->p, &out.p);
+    *AB = out;
+}
+
+void se23_inverse(const se23_pose_t *T, se23_pose_t *Tinv)
+{
+    se23_pose_t out;
+    se23_m3_transpose(&T->R, &out.R);
+    se23_m3_tmul_v3(&T->R, &T->v, &out.v);
+    se23_m3_tmul_v3(&T->R, &T->p, &out.p);
+    se23_v3_scale(&out.v, SE23_R(-1), &out.v);
+    se23_v3_scale(&out.p, SE23_R(-1), &out.p);
+    *Tinv = out;
+}
+
+void se23_act(const se23_pose_t *T, const se23_vec3_t *x, se23_vec3_t *y)
+{
+    se23_vec3_t out;
+    se23_m3_mul_v3(&T->R, x, &out);
+    se23_v3_axpy(&out, SE23_R(1), &T->p, y);
+}
+
+void se23_hat(const se23_tangent_t *xi, se23_mat5_t *X)
+{
+    se23_vec3_t phi;
+    se23_mat3_t W;
+    block_get(xi, SE23_IDX_PHI, &phi);
+    se23_m3_skew(&phi, &W);
+    se23_mat5_t out = {{{0}}};
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            out.m[i][j] = W.m[i][j];
+        }
+        out.m[i][3] = xi->v[SE23_IDX_NU + i];
+        out.m[i][4] = xi->v[SE23_IDX_RHO + i];
+    }
+    *X = out;
+}
+
+void se23_vee(const se23_mat5_t *X, se23_tangent_t *xi)
+{
+    se23_tangent_t out;
+    out.v[SE23_IDX_PHI + 0] = SE23_R(0.5) * (X->m[2][1] - X->m[1][2]);
+    out.v[SE23_IDX_PHI + 1] = SE23_R(0.5) * (X->m[0][2] - X->m[2][0]);
+    out.v[SE23_IDX_PHI + 2] = SE23_R(0.5) * (X->m[1][0] - X->m[0][1]);
+    for (int i = 0; i < 3; ++i) {
+        out.v[SE23_IDX_NU + i] = X->m[i][3];
+        out.v[SE23_IDX_RHO + i] = X->m[i][4];
+    }
+    *xi = out;
+}
+
+void se23_to_mat5(const se23_pose_t *T, se23_mat5_t *M)
+{
+    se23_mat5_t out = {{{0}}};
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            out.m[i][j] = T->R.m[i][j];
+        }
+        out.m[i][3] = T->v.v[i];
+        out.m[i][4] = T->p.v[i];
+    }
+    out.m[3][3] = SE23_R(1);
+    out.m[4][4] = SE23_R(1);
+    *M = out;
+}
+
+se23_status_t se23_from_mat5(const se23_mat5_t *M, se23_pose_t *T)
+{
+    SE23_CHECK_NOT_NULL(M);
+    SE23_CHECK_NOT_NULL(T);
+    if (!se23_all_finite(&M->m[0][0], 25)) {
+        return SE23_ERR_NONFINITE;
+    }
+    for (int i = 3; i < 5; ++i) {
+        for (int j = 0; j < 5; ++j) {
+            const se23_real_t expected = (i == j) ? SE23_R(1) : SE23_R(0);
+            if (!(se23_fabs(M->m[i][j] - expected) <= SE23_R(SE23_CFG_ROT_TOL))) {
+                return SE23_ERR_DOMAIN;
+            }
+        }
+    }
+    se23_pose_t out;
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            out.R.m[i][j] = M->m[i][j];
+        }
+        out.v.v[i] = M->m[i][3];
+        out.p.v[i] = M->m[i][4];
+    }
+    se23_status_t st = se23_so3_check(&out.R);
+    if (st != SE23_OK) {
+        return st;
+    }
+    *T = out;
+    return SE23_OK;
+}
+
+se23_status_t se23_exp(const se23_tangent_t *xi, se23_pose_t *T)
+{
+    SE23_CHECK_NOT_NULL(xi);
+    SE23_CHECK_NOT_NULL(T);
+    if (!se23_all_finite(xi->v, 9)) {
+        return SE23_ERR_NONFINITE;
+    }
+    se23_vec3_t phi;
+    se23_vec3_t nu;
+    se23_vec3_t rho;
+    block_get(xi, SE23_IDX_PHI, &phi);
+    block_get(xi, SE23_IDX_NU, &nu);
+    block_get(xi, SE23_IDX_RHO, &rho);
+    se23_pose_t out;
+    se23_mat3_t J;
+    (void)se23_so3_exp(&phi, &out.R); /* cannot fail: phi is finite */
+    (void)se23_so3_jl(&phi, &J);
+    se23_m3_mul_v3(&J, &nu, &out.v);
+    se23_m3_mul_v3(&J, &rho, &out.p);
+    *T = out;
+    return SE23_OK;
+}
+
+se23_status_t se23_log(const se23_pose_t *T, se23_tangent_t *xi)
+{
+    SE23_CHECK_NOT_NULL(T);
+    SE23_CHECK_NOT_NULL(xi);
+    if (!se23_all_finite(T->v.v, 3) || !se23_all_finite(T->p.v, 3)) {
+        return SE23_ERR_NONFINITE;
+    }
+    se23_vec3_t phi;
+    se23_status_t st = se23_so3_log(&T->R, &phi);
+    if (st != SE23_OK) {
+        return st;
+    }
+    se23_mat3_t Jinv;
+    (void)se23_so3_jl_inv(&phi, &Jinv); /* cannot fail: |phi| <= pi */
+    se23_vec3_t nu;
+    se23_vec3_t rho;
+    se23_m3_mul_v3(&Jinv, &T->v, &nu);
+    se23_m3_mul_v3(&Jinv, &T->p, &rho);
+    block_set(xi, SE23_IDX_PHI, &phi);
+    block_set(xi, SE23_IDX_NU, &nu);
+    block_set(xi, SE23_IDX_RHO, &rho);
+    return SE23_OK;
+}
+
+/* Writes the 3x3 block (bi, bj) of a 9x9 matrix. */
+static void mat9_set_block(se23_mat9_t *M, int bi, int bj, const se23_mat3_t *B)
+{
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            M->m[9 * (3 * bi + i) + 3 * bj + j] = B->m[i][j];
+        }
+    }
+}
+
+/* Ad = [[A, 0, 0], [B, A, 0], [C, 0, A]]: the shape of Ad_T and Ad_{T^-1}. */
+static void adjoint_from_blocks(const se23_mat3_t *A, const se23_mat3_t *B,
+                                const se23_mat3_t *C, se23_mat9_t *Ad)
+{
+    for (int k = 0; k < 81; ++k) {
+        Ad->m[k] = SE23_R(0);
+    }
+    for (int b = 0; b < 3; ++b) {
+        mat9_set_block(Ad, b, b, A);
+    }
+    mat9_set_block(Ad, 1, 0, B);
+    mat9_set_block(Ad, 2, 0, C);
+}
+
+void se23_adjoint(const se23_pose_t *T, se23_mat9_t *Ad)
+{
+    se23_mat3_t vx;
+    se23_mat3_t px;
+    se23_m3_skew(&T->v, &vx);
+    se23_m3_skew(&T->p, &px);
+    se23_m3_mul(&vx, &T->R, &vx); /* v^ R */
+    se23_m3_mul(&px, &T->R, &px); /* p^ R */
+    adjoint_from_blocks(&T->R, &vx, &px, Ad);
+}
+
+void se23_adjoint_inv(const se23_pose_t *T, se23_mat9_t *Ad)
+{
+    se23_mat3_t Rt;
+    se23_mat3_t vx;
+    se23_mat3_t px;
+    se23_vec3_t minus_v;
+    se23_vec3_t minus_p;
+    se23_m3_transpose(&T->R, &Rt);
+    se23_v3_scale(&T->v, SE23_R(-1), &minus_v);
+    se23_v3_scale(&T->p, SE23_R(-1), &minus_p);
+    se23_m3_skew(&minus_v, &vx);
+    se23_m3_skew(&minus_p, &px);
+    se23_m3_mul(&Rt, &vx, &vx); /* -R^T v^ */
+    se23_m3_mul(&Rt, &px, &px); /* -R^T p^ */
+    adjoint_from_blocks(&Rt, &vx, &px, Ad);
+}
+
+se23_status_t se23_pose_check(const se23_pose_t *T)
+{
+    SE23_CHECK_NOT_NULL(T);
+    if (!se23_all_finite(T->v.v, 3) || !se23_all_finite(T->p.v, 3)) {
+        return SE23_ERR_NONFINITE;
+    }
+    return se23_so3_check(&T->R);
+}

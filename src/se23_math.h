@@ -1,0 +1,57 @@
+/**
+ * @file se23_math.h
+ * @brief Internal: one wrapper per libm function, so that the float build
+ *        calls only the float functions (sinf, ...) and never promotes to
+ *        double. Ports may override any wrapper by defining SE23_SQRT etc.
+ *        (e.g. to a CMSIS-DSP or hardware instruction).
+ */
+#ifndef SE23_MATH_H
+#define SE23_MATH_H
+
+#include <float.h>
+#include <math.h>
+
+#include "se23/types.h"
+
+#if SE23_CFG_DOUBLE
+#define SE23_LIBM(fn) fn
+#else
+#define SE23_LIBM(fn) fn##f
+#endif
+
+#ifndef SE23_SQRT
+#define SE23_SQRT SE23_LIBM(sqrt)
+#endif
+#ifndef SE23_SIN
+#define SE23_SIN SE23_LIBM(sin)
+#endif
+#ifndef SE23_COS
+#define SE23_COS SE23_LIBM(cos)
+#endif
+#ifndef SE23_ATAN2
+#define SE23_ATAN2 SE23_LIBM(atan2)
+#endif
+#ifndef SE23_FABS
+#define SE23_FABS SE23_LIBM(fabs)
+#endif
+
+static inline se23_real_t se23_sqrt(se23_real_t x) { return SE23_SQRT(x); }
+static inline se23_real_t se23_sin(se23_real_t x) { return SE23_SIN(x); }
+static inline se23_real_t se23_cos(se23_real_t x) { return SE23_COS(x); }
+static inline se23_real_t se23_atan2(se23_real_t y, se23_real_t x) { return SE23_ATAN2(y, x); }
+static inline se23_real_t se23_fabs(se23_real_t x) { return SE23_FABS(x); }
+
+/** Nonzero if x is neither NaN nor infinite (C99 type-generic isfinite). */
+static inline int se23_is_finite(se23_real_t x) { return isfinite(x) != 0; }
+
+/** Machine epsilon of se23_real_t. */
+#if SE23_CFG_DOUBLE
+#define SE23_EPSILON DBL_EPSILON
+#else
+#define SE23_EPSILON FLT_EPSILON
+#endif
+
+/** pi in the build's precision. */
+#define SE23_PI SE23_R(3.14159265358979323846)
+
+#endif /* SE23_MATH_H */

@@ -1,0 +1,239 @@
+/* SO(3): see so3.h. */
+#include "se23/so3.h"
+
+#include "argcheck.h"
+#include "linalg.h"
+#include "se23_math.h"
+#include "so3_series.h"
+
+/* J_l^-1 is refused this close to its singularity at 2 pi. */
+#define JL_INV_MARGIN SE23_R(1e-3)
+/* se23_so3_normalize repairs at most this much drift, in this many steps. */
+#define NORMALIZE_MAX_DRIFT SE23_R(0.1)
+#define NORMALIZE_MAX_ITER 6
+
+
+void se23_so3_hat(const se23_vec3_t *phi, se23_mat3_t *W)
+{
+    se23_m3_skew(phi, W);
+}
+
+void se23_so3_vee(const se23_mat3_t *W, se23_vec3_t *phi)
+{
+    se23_vec3_t out;
+    out.v[0] = SE23_R(0.5) * (W->m[2][1] - W->m[1][2]);
+    out.v[1] = SE23_R(0.5) * (W->m[0][2] - W->m[2][0]);
+    out.v[2] = SE23_R(0.5) * (W->m[1][0] - W->m[0][1]);
+    *phi = out;
+}
+
+/* theta = |phi|, or a status if phi is not finite. */
+static se23_status_t angle_of(const se23_vec3_t *phi, se23_real_t *theta)
+{
+    if (!se23_all_finite(phi->v, 3)) {
+        return SE23_ERR_NONFINITE;
+    }
+    *theta = se23_sqrt(se23_v3_dot(phi, phi));
+    return SE23_OK;
+}
+
+se23_status_t se23_so3_exp(const se23_vec3_t *phi, se23_mat3_t *R)
+{
+    SE23_CHECK_NOT_NULL(phi);
+    SE23_CHECK_NOT_NULL(R);
+    se23_real_t theta;
+    se23_status_t st = angle_of(phi, &theta);
+    if (st != SE23_OK) {
+        return st;
+    }
+    se23_so3_coeffs_t c;
+    se23_so3_coeffs(theta, &c);
+    se23_m3_series(SE23_R(1), c.c1, c.c2, phi, R);
+    return SE23_OK;
+}
+
+se23_status_t se23_so3_jl(const se23_vec3_t *phi, se23_mat3_t *J)
+{
+    SE23_CHECK_NOT_NULL(phi);
+    SE23_CHECK_NOT_NULL(J);
+    se23_real_t theta;
+    se23_status_t st = angle_of(phi, &theta);
+    if (st != SE23_OK) {
+        return st;
+    }
+    se23_so3_coeffs_t c;
+    se23_so3_coeffs(theta, &c);
+    se23_m3_series(SE23_R(1), c.c2, c.c3, phi, J);
+    return SE23_OK;
+}
+
+se23_status_t se23_so3_jr(const se23_vec3_t *phi, se23_mat3_t *J)
+{
+    SE23_CHECK_NOT_NULL(phi);
+    SE23_CHECK_NOT_NULL(J);
+    se23_real_t theta;
+    se23_status_t st = angle_of(phi, &theta);
+    if (st != SE23_OK) {
+        return st;
+    }
+    se23_so3_coeffs_t c;
+    se23_so3_coeffs(theta, &c);
+    /* J_r(phi) = J_l(-phi): the odd term changes sign. */
+    se23_m3_series(SE23_R(1), -c.c2, c.c3, phi, J);
+    return SE23_OK;
+}
+
+se23_status_t se23_so3_jl_inv(const se23_vec3_t *phi, se23_mat3_t *Jinv)
+{
+    SE23_CHECK_NOT_NULL(phi);
+    SE23_CHECK_NOT_NULL(Jinv);
+    se23_real_t theta;
+    se23_status_t st = angle_of(phi, &theta);
+    if (st != SE23_OK) {
+        return st;
+    }
+    if (theta >= SE23_R(2) * SE23_PI - JL_INV_MARGIN) {
+        return SE23_ERR_DOMAIN;
+    }
+    se23_m3_series(SE23_R(1), SE23_R(-0.5), se23_so3_jl_inv_coeff(theta), phi,
+                   Jinv);
+    return SE23_OK;
+}
+
+se23_status_t se23_so3_h(const se23_vec3_t *phi, se23_mat3_t *H)
+{
+    SE23_CHECK_NOT_NULL(phi);
+    SE23_CHECK_NOT_NULL(H);
+    se23_real_t theta;
+    se23_status_t st = angle_of(phi, &theta);
+    if (st != SE23_OK) {
+        return st;
+    }
+    se23_so3_coeffs_t c;
+    se23_so3_coeffs(theta, &c);
+    se23_m3_series(SE23_R(0.5), c.c3, c.c4, phi, H);
+    return SE23_OK;
+}
+
+se23_status_t se23_so3_k(const se23_vec3_t *phi, se23_mat3_t *K)
+{
+    SE23_CHECK_NOT_NULL(phi);
+    SE23_CHECK_NOT_NULL(K);
+    se23_real_t theta;
+    se23_status_t st = angle_of(phi, &theta);
+    if (st != SE23_OK) {
+        return st;
+    }
+    se23_real_t k1;
+    se23_real_t k2;
+    se23_so3_k_coeffs(theta, &k1, &k2);
+    se23_m3_series(SE23_R(0.5), k1, k2, phi, K);
+    return SE23_OK;
+}
+
+/* Largest |(R^T R - I)_ij|. */
+static se23_real_t orthogonality_error(const se23_mat3_t *R)
+{
+    se23_mat3_t RtR;
+    se23_m3_mul_tn(R, R, &RtR);
+    se23_real_t worst = SE23_R(0);
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            se23_real_t e = se23_fabs(RtR.m[i][j] - ((i == j) ? SE23_R(1) : SE23_R(0)));
+            worst = (e > worst) ? e : worst;
+        }
+    }
+    return worst;
+}
+
+/* Shared by check and normalize: finite, det > 0, drift within tol. */
+static se23_status_t check_rotation(const se23_mat3_t *R, se23_real_t tol)
+{
+    if (!se23_all_finite(&R->m[0][0], 9)) {
+        return SE23_ERR_NONFINITE;
+    }
+    if (!(orthogonality_error(R) <= tol) || !(se23_m3_det(R) > SE23_R(0))) {
+        return SE23_ERR_NOT_ROTATION;
+    }
+    return SE23_OK;
+}
+
+se23_status_t se23_so3_check(const se23_mat3_t *R)
+{
+    SE23_CHECK_NOT_NULL(R);
+    return check_rotation(R, SE23_R(SE23_CFG_ROT_TOL));
+}
+
+se23_status_t se23_so3_log(const se23_mat3_t *R, se23_vec3_t *phi)
+{
+    SE23_CHECK_NOT_NULL(R);
+    SE23_CHECK_NOT_NULL(phi);
+    se23_status_t st = check_rotation(R, SE23_R(SE23_CFG_ROT_TOL));
+    if (st != SE23_OK) {
+        return st;
+    }
+    /* R - R^T = 2 sin(theta) n^ and trace R = 1 + 2 cos(theta). */
+    const se23_vec3_t w = {{R->m[2][1] - R->m[1][2], R->m[0][2] - R->m[2][0],
+                            R->m[1][0] - R->m[0][1]}};
+    const se23_real_t cos_theta =
+        SE23_R(0.5) * (R->m[0][0] + R->m[1][1] + R->m[2][2] - SE23_R(1));
+    const se23_real_t sin_theta = SE23_R(0.5) * se23_sqrt(se23_v3_dot(&w, &w));
+    const se23_real_t theta = se23_atan2(sin_theta, cos_theta);
+
+    if (cos_theta >= SE23_R(0)) {
+        /* theta <= pi/2: phi = theta / (2 sin theta) w, with sin(theta)/theta
+         * = c1 from its series, so there is no 0/0 at theta = 0. */
+        se23_so3_coeffs_t c;
+        se23_so3_coeffs(theta, &c);
+        se23_v3_scale(&w, SE23_R(0.5) / c.c1, phi);
+        return SE23_OK;
+    }
+    /* theta > pi/2: w loses relative accuracy as theta -> pi, so take the
+     * axis from the symmetric part (R + R^T)/2 = cos(theta) I + (1 - cos) n n^T,
+     * using the column of its largest diagonal entry, and the sign from w. */
+    int k = 0;
+    for (int i = 1; i < 3; ++i) {
+        if (R->m[i][i] > R->m[k][k]) {
+            k = i;
+        }
+    }
+    se23_vec3_t n;
+    for (int i = 0; i < 3; ++i) {
+        n.v[i] = (i == k) ? (R->m[k][k] - cos_theta)
+                          : SE23_R(0.5) * (R->m[i][k] + R->m[k][i]);
+    }
+    /* n now holds (1 - cos) n_k n; normalise it and orient it along w. */
+    se23_real_t scale = theta / se23_sqrt(se23_v3_dot(&n, &n));
+    if (se23_v3_dot(&n, &w) < SE23_R(0)) {
+        scale = -scale;
+    }
+    se23_v3_scale(&n, scale, phi);
+    return SE23_OK;
+}
+
+se23_status_t se23_so3_normalize(const se23_mat3_t *R, se23_mat3_t *Rn)
+{
+    SE23_CHECK_NOT_NULL(R);
+    SE23_CHECK_NOT_NULL(Rn);
+    se23_status_t st = check_rotation(R, NORMALIZE_MAX_DRIFT);
+    if (st != SE23_OK) {
+        return st;
+    }
+    /* Newton-Schulz: X <- X (3I - X^T X)/2 converges quadratically to the
+     * orthogonal polar factor; from a drift of 0.1 five steps reach double
+     * rounding. Stop as soon as the drift is at rounding level. */
+    const se23_real_t done = SE23_R(4) * SE23_EPSILON;
+    se23_mat3_t X = *R;
+    for (int it = 0; it < NORMALIZE_MAX_ITER && orthogonality_error(&X) > done; ++it) {
+        se23_mat3_t XtX;
+        se23_m3_mul_tn(&X, &X, &XtX);
+        for (int i = 0; i < 3; ++i) {
+            for (int j = 0; j < 3; ++j) {
+                XtX.m[i][j] = ((i == j) ? SE23_R(1.5) : SE23_R(0)) - SE23_R(0.5) * XtX.m[i][j];
+            }
+        }
+        se23_m3_mul(&X, &XtX, &X);
+    }
+    *Rn = X;
+    return SE23_OK;
+}

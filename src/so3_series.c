@@ -1,0 +1,140 @@
+/* SO(3) series coefficients; see so3_series.h.
+ *
+ * Thresholds. The closed forms lose about eps * 12/theta^2 (relative) to
+ * cancellation; the Taylor series with SERIES_TERMS terms truncates at about
+ * theta^18/19!. Double: Taylor below theta = 1 (truncation < 1e-17, closed
+ * form cancellation above it < 3e-15). Float: Taylor below theta = 2, where
+ * the closed forms are within a few FLT_EPSILON. The J^-1 coefficient's
+ * series has radius 2 pi and its own, smaller thresholds.
+ */
+#include "so3_series.h"
+
+#include "se23_math.h"
+
+#define SERIES_TERMS 9
+
+#if SE23_CFG_DOUBLE
+#define TAYLOR_MAX SE23_R(1.0)
+#define JL_INV_TAYLOR_MAX SE23_R(0.5)
+#else
+#define TAYLOR_MAX SE23_R(2.0)
+#define JL_INV_TAYLOR_MAX SE23_R(1.5)
+#endif
+
+/* 1/n!, n = 0..20 */
+static const se23_real_t inv_fact[21] = {
+    SE23_R(1.0 / 1.0),
+    SE23_R(1.0 / 1.0),
+    SE23_R(1.0 / 2.0),
+    SE23_R(1.0 / 6.0),
+    SE23_R(1.0 / 24.0),
+    SE23_R(1.0 / 120.0),
+    SE23_R(1.0 / 720.0),
+    SE23_R(1.0 / 5040.0),
+    SE23_R(1.0 / 40320.0),
+    SE23_R(1.0 / 362880.0),
+    SE23_R(1.0 / 3628800.0),
+    SE23_R(1.0 / 39916800.0),
+    SE23_R(1.0 / 479001600.0),
+    SE23_R(1.0 / 6227020800.0),
+    SE23_R(1.0 / 87178291200.0),
+    SE23_R(1.0 / 1307674368000.0),
+    SE23_R(1.0 / 20922789888000.0),
+    SE23_R(1.0 / 355687428096000.0),
+    SE23_R(1.0 / 6402373705728000.0),
+    SE23_R(1.0 / 121645100408832000.0),
+    SE23_R(1.0 / 2432902008176640000.0),
+};
+/* |k1 Taylor coefficients|: 1/((2k+1)! (2k+3)) */
+static const se23_real_t k1_taylor[SERIES_TERMS] = {
+    SE23_R(1.0 / 3.0),
+    SE23_R(1.0 / 30.0),
+    SE23_R(1.0 / 840.0),
+    SE23_R(1.0 / 45360.0),
+    SE23_R(1.0 / 3991680.0),
+    SE23_R(1.0 / 518918400.0),
+    SE23_R(1.0 / 93405312000.0),
+    SE23_R(1.0 / 22230464256000.0),
+    SE23_R(1.0 / 6758061133824000.0),
+};
+static const se23_real_t k2_taylor[SERIES_TERMS] = {
+    SE23_R(1.0 / 8.0),
+    SE23_R(1.0 / 144.0),
+    SE23_R(1.0 / 5760.0),
+    SE23_R(1.0 / 403200.0),
+    SE23_R(1.0 / 43545600.0),
+    SE23_R(1.0 / 6706022400.0),
+    SE23_R(1.0 / 1394852659200.0),
+    SE23_R(1.0 / 376610217984000.0),
+    SE23_R(1.0 / 128047474114560000.0),
+};
+/* e Taylor coefficients: (-1)^(n+1) B_2n / (2n)!, n = 1..9 (B: Bernoulli) */
+static const se23_real_t e_taylor[SERIES_TERMS] = {
+    SE23_R(1.0 / 12.0),
+    SE23_R(1.0 / 720.0),
+    SE23_R(1.0 / 30240.0),
+    SE23_R(1.0 / 1209600.0),
+    SE23_R(1.0 / 47900160.0),
+    SE23_R(691.0 / 1307674368000.0),
+    SE23_R(1.0 / 74724249600.0),
+    SE23_R(3617.0 / 10670622842880000.0),
+    SE23_R(43867.0 / 5109094217170944000.0),
+};
+
+/* sum_{k < SERIES_TERMS} coef[k * stride] * x^k, by Horner. */
+static se23_real_t horner(const se23_real_t *coef, int stride, se23_real_t x)
+{
+    se23_real_t acc = coef[(SERIES_TERMS - 1) * stride];
+    for (int k = SERIES_TERMS - 2; k >= 0; --k) {
+        acc = coef[k * stride] + x * acc;
+    }
+    return acc;
+}
+
+void se23_so3_coeffs(se23_real_t theta, se23_so3_coeffs_t *c)
+{
+    const se23_real_t t = theta * theta;
+    if (theta < TAYLOR_MAX) {
+        /* c_m = sum_k inv_fact[2k + m] (-t)^k */
+        c->c1 = horner(&inv_fact[1], 2, -t);
+        c->c2 = horner(&inv_fact[2], 2, -t);
+        c->c3 = horner(&inv_fact[3], 2, -t);
+        c->c4 = horner(&inv_fact[4], 2, -t);
+        return;
+    }
+    const se23_real_t s = se23_sin(theta);
+    const se23_real_t half_s = se23_sin(SE23_R(0.5) * theta);
+    const se23_real_t one_minus_cos = SE23_R(2) * half_s * half_s;
+    c->c1 = s / theta;
+    c->c2 = one_minus_cos / t;
+    c->c3 = (theta - s) / (t * theta);
+    c->c4 = (SE23_R(0.5) * t - one_minus_cos) / (t * t);
+}
+
+void se23_so3_k_coeffs(se23_real_t theta, se23_real_t *k1, se23_real_t *k2)
+{
+    const se23_real_t t = theta * theta;
+    if (theta < TAYLOR_MAX) {
+        *k1 = horner(k1_taylor, 1, -t);
+        *k2 = horner(k2_taylor, 1, -t);
+        return;
+    }
+    const se23_real_t s = se23_sin(theta);
+    const se23_real_t half_s = se23_sin(SE23_R(0.5) * theta);
+    const se23_real_t one_minus_cos = SE23_R(2) * half_s * half_s;
+    const se23_real_t cos_theta = SE23_R(1) - one_minus_cos;
+    *k1 = (s - theta * cos_theta) / (t * theta);
+    *k2 = (SE23_R(0.5) * t + one_minus_cos - theta * s) / (t * t);
+}
+
+se23_real_t se23_so3_jl_inv_coeff(se23_real_t theta)
+{
+    const se23_real_t t = theta * theta;
+    if (theta < JL_INV_TAYLOR_MAX) {
+        return horner(e_taylor, 1, t);
+    }
+    /* (theta/2) cot(theta/2) = theta sin(theta) / (2 (1 - cos theta)) */
+    const se23_real_t half = SE23_R(0.5) * theta;
+    const se23_real_t half_cot = half * se23_cos(half) / se23_sin(half);
+    return (SE23_R(1) - half_cot) / t;
+}

@@ -1,0 +1,6 @@
+# Library alone with the strict flags: host in both precisions, then
+# Cortex-M4F (float) and Cortex-M7 (double) with arm-none-eabi-gcc.
+check build-lib-host make -s lib BUILD="$BUILD"
+check build-lib-cross make -s cross BUILD="$BUILD"
+check build-tests-double make -s tests-double BUILD="$BUILD" JOBS="$JOBS"
+check build-tests-float make -s tests-float BUILD="$BUILD" JOBS="$JOBS"
