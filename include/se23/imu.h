@@ -1,0 +1,119 @@
+/**
+ * @file imu.h
+ * @brief Exact propagation of an extended pose through IMU samples, on flat
+ *        and on rotating Earth (paper sections 1 and 2).
+ *
+ * Model. An IMU sample holds the angular rate w_ib_b and the specific force
+ * f_b, both in the body frame, constant over [t_k, t_k + dt) (zero-order
+ * hold). Over that interval the navigation equations (paper eq. nav:eq, flat;
+ * eq. nav:eq_Coriolis, rotating Earth with constant Omega) have the exact
+ * solution (paper eq. discrete2)
+ *   T' <- Gamma' Phi_dt(T') Upsilon,
+ * where
+ *   Phi_dt(R, v, p) = (R, v, p + dt v)                      (eq. phi:eq)
+ *   Upsilon = (exp(w dt ^), dt J(w dt) f, dt^2 H(w dt) f)   (exact increment)
+ *   Gamma'  = se23_earth_model_t.gamma                      (earth.h)
+ * and T' = (R, v' = v + Omega x p, p) is the carried state of paper eq.
+ * eq:trick. On flat Earth (Omega = 0) T' = T and Gamma' = (I, g dt, g dt^2/2):
+ * the same step is paper eq. discrete2. J and H are the series of so3.h.
+ * The step is exact for piecewise-constant inputs, whatever dt and the rates:
+ * its only errors are rounding.
+ *
+ * Carried state. The user's state is (R, v, p), v the velocity relative to
+ * the Earth-fixed nav frame. Convert with se23_imu_carried_from_user before
+ * propagating and se23_imu_user_from_carried to read v back. (Covariances
+ * convert with M = [[I,0,0],[0,I,-(R^T Omega)^],[0,0,I]], DESIGN.md section 3.)
+ *
+ * Functions index:
+ *   se23_imu_increment          exact Upsilon of one sample
+ *   se23_imu_increment_euler    the paper's first-order (Euler) Upsilon, for comparison
+ *   se23_imu_transition         out = Gamma Phi_t(T) Upsilon, no checks
+ *   se23_imu_step               one checked propagation step of a carried state
+ *   se23_imu_carried_from_user, se23_imu_user_from_carried   v' = v + Omega x p
+ *
+ * All functions accept outputs that alias inputs.
+ */
+#ifndef SE23_IMU_H
+#define SE23_IMU_H
+
+#include "se23/earth.h"
+#include "se23/types.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** One IMU sample, held constant over [t, t + dt). */
+typedef struct {
+    se23_vec3_t w_ib_b; /**< angular rate of the body w.r.t. inertial space, body frame [rad/s] */
+    se23_vec3_t f_b;    /**< specific force (acceleration minus gravity), body frame [m/s^2] */
+    se23_real_t dt;     /**< duration of the sample [s] */
+} se23_imu_sample_t;
+
+/**
+ * ups = Upsilon(w, f, dt) = (exp(w dt ^), dt J(w dt) f, dt^2 H(w dt) f),
+ * the exact solution over one sample of paper eq. ODE
+ * (dR/dt = R w^, dV/dt = R f, dX/dt = V from (I, 0, 0)). J = J_l, H as in so3.h.
+ * Public and check-free beyond the sample, so that covariance propagation
+ * (F_k = Ad_{Upsilon^-1} F) and bias Jacobians can reuse it.
+ * @return SE23_ERR_NONFINITE if the sample holds NaN/Inf, SE23_ERR_DT unless
+ *         0 < dt <= SE23_CFG_DT_MAX.
+ */
+se23_status_t se23_imu_increment(const se23_imu_sample_t *s, se23_pose_t *ups);
+
+/**
+ * ups = the paper's first-order (Euler) increment, in the remark after
+ * eq. discrete2: R^upsilon held constant over dt in the velocity and
+ * position lines, i.e. (exp(w dt ^), dt f, dt^2 f / 2). The paper prints
+ * dt^2 f without the 1/2 (a typo, DESIGN.md section 3); this is the
+ * corrected form. Its error per sample is O(|w| dt^2 |f|) in velocity:
+ * provided only to measure what the exact increment gains (README).
+ * @return as se23_imu_increment.
+ */
+se23_status_t se23_imu_increment_euler(const se23_imu_sample_t *s,
+                                       se23_pose_t *ups);
+
+/**
+ * out = Gamma Phi_t(T) Upsilon  (paper eq. discrete), Phi_t(R, v, p) =
+ * (R, v, p + t v). The building block of se23_imu_step (Gamma = Gamma'(dt),
+ * one sample), of preintegration (Gamma = I, accumulating Deltas) and of
+ * prediction (Gamma = Gamma'(Delta t), one factor). No checks: NaN in gives
+ * NaN out.
+ */
+void se23_imu_transition(const se23_pose_t *gamma, const se23_pose_t *T,
+                         const se23_pose_t *ups, se23_real_t t,
+                         se23_pose_t *out);
+
+/**
+ * T_next = Gamma' Phi_dt(T) Upsilon(s): one exact propagation step of the
+ * carried state T = (R, v + Omega x p, p) over the sample s (paper eq.
+ * discrete2; with model->w_ie_n = 0, T is the plain (R, v, p), flat Earth).
+ * Gamma' is model->gamma when s->dt equals model->dt to within 4 ulp, and
+ * is recomputed for s->dt otherwise (timing jitter costs one more
+ * se23_earth_gamma, not accuracy).
+ * In the float build R drifts from SO(3) by rounding; re-orthonormalise it
+ * with se23_so3_normalize every few hundred steps, or the drift eventually
+ * exceeds SE23_CFG_ROT_TOL and the step refuses the state.
+ * @return SE23_ERR_NONFINITE (NaN/Inf in s or T), SE23_ERR_DT unless
+ *         0 < s->dt <= model->dt_max, SE23_ERR_NOT_ROTATION (T.R not in
+ *         SO(3) within SE23_CFG_ROT_TOL); T_next is untouched on error.
+ */
+se23_status_t se23_imu_step(const se23_earth_model_t *model,
+                            const se23_pose_t *T, const se23_imu_sample_t *s,
+                            se23_pose_t *T_next);
+
+/** Tc = (R, v + Omega x p, p): the carried state of the user's T = (R, v, p)
+ *  (paper eq. eq:trick), Omega = model->w_ie_n. No checks. */
+void se23_imu_carried_from_user(const se23_earth_model_t *model,
+                                const se23_pose_t *T, se23_pose_t *Tc);
+
+/** T = (R, v' - Omega x p, p): the user's state of a carried Tc = (R, v', p).
+ *  No checks. */
+void se23_imu_user_from_carried(const se23_earth_model_t *model,
+                                const se23_pose_t *Tc, se23_pose_t *T);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* SE23_IMU_H */

@@ -1,0 +1,146 @@
+/* Exact IMU increment and propagation step; see imu.h. */
+#include "se23/imu.h"
+
+#include "argcheck.h"
+#include "linalg.h"
+#include "se23/se23.h"
+#include "se23_math.h"
+#include "so3_series.h"
+
+/* The cached Gamma'(model->dt) is used when the sample's dt is this many
+ * epsilons (relative) from model->dt: the difference is then rounding. */
+#define GAMMA_CACHE_ULPS SE23_R(4)
+
+/* Sample finite and 0 < dt <= dt_max. */
+static se23_status_t check_sample(const se23_imu_sample_t *s, se23_real_t dt_max)
+{
+    if (!se23_all_finite(s->w_ib_b.v, 3) || !se23_all_finite(s->f_b.v, 3) ||
+        !se23_is_finite(s->dt)) {
+        return SE23_ERR_NONFINITE;
+    }
+    if (!(s->dt > SE23_R(0) && s->dt <= dt_max)) {
+        return SE23_ERR_DT;
+    }
+    return SE23_OK;
+}
+
+/* phi = w dt, the series coefficients at |phi|, and R = exp(phi). */
+static void rotation_increment(const se23_imu_sample_t *s, se23_vec3_t *phi,
+                               se23_so3_coeffs_t *c, se23_mat3_t *R)
+{
+    se23_v3_scale(&s->w_ib_b, s->dt, phi);
+    se23_so3_coeffs(se23_sqrt(se23_v3_dot(phi, phi)), c);
+    se23_m3_series(SE23_R(1), c->c1, c->c2, phi, R);
+}
+
+/* Exact Upsilon of a checked sample. */
+static void exact_increment(const se23_imu_sample_t *s, se23_pose_t *ups)
+{
+    se23_vec3_t phi;
+    se23_so3_coeffs_t c;
+    se23_pose_t out;
+    se23_mat3_t M;
+    rotation_increment(s, &phi, &c, &out.R);
+    se23_m3_series(SE23_R(1), c.c2, c.c3, &phi, &M); /* J(phi) */
+    se23_m3_mul_v3(&M, &s->f_b, &out.v);
+    se23_v3_scale(&out.v, s->dt, &out.v);
+    se23_m3_series(SE23_R(0.5), c.c3, c.c4, &phi, &M); /* H(phi) */
+    se23_m3_mul_v3(&M, &s->f_b, &out.p);
+    se23_v3_scale(&out.p, s->dt * s->dt, &out.p);
+    *ups = out;
+}
+
+se23_status_t se23_imu_increment(const se23_imu_sample_t *s, se23_pose_t *ups)
+{
+    SE23_CHECK_NOT_NULL(s);
+    SE23_CHECK_NOT_NULL(ups);
+    se23_status_t st = check_sample(s, SE23_R(SE23_CFG_DT_MAX));
+    if (st != SE23_OK) {
+        return st;
+    }
+    exact_increment(s, ups);
+    return SE23_OK;
+}
+
+se23_status_t se23_imu_increment_euler(const se23_imu_sample_t *s,
+                                       se23_pose_t *ups)
+{
+    SE23_CHECK_NOT_NULL(s);
+    SE23_CHECK_NOT_NULL(ups);
+    se23_status_t st = check_sample(s, SE23_R(SE23_CFG_DT_MAX));
+    if (st != SE23_OK) {
+        return st;
+    }
+    se23_vec3_t phi;
+    se23_so3_coeffs_t c;
+    se23_pose_t out;
+    rotation_increment(s, &phi, &c, &out.R);
+    se23_v3_scale(&s->f_b, s->dt, &out.v);
+    se23_v3_scale(&s->f_b, SE23_R(0.5) * s->dt * s->dt, &out.p);
+    *ups = out;
+    return SE23_OK;
+}
+
+void se23_imu_transition(const se23_pose_t *gamma, const se23_pose_t *T,
+                         const se23_pose_t *ups, se23_real_t t,
+                         se23_pose_t *out)
+{
+    se23_pose_t P = *T; /* Phi_t(T) */
+    se23_v3_axpy(&P.p, t, &P.v, &P.p);
+    se23_compose(&P, ups, &P);
+    se23_compose(gamma, &P, out);
+}
+
+se23_status_t se23_imu_step(const se23_earth_model_t *model,
+                            const se23_pose_t *T, const se23_imu_sample_t *s,
+                            se23_pose_t *T_next)
+{
+    SE23_CHECK_NOT_NULL(model);
+    SE23_CHECK_NOT_NULL(T);
+    SE23_CHECK_NOT_NULL(s);
+    SE23_CHECK_NOT_NULL(T_next);
+    se23_status_t st = check_sample(s, model->dt_max);
+    if (st != SE23_OK) {
+        return st;
+    }
+    st = se23_pose_check(T);
+    if (st != SE23_OK) {
+        return st;
+    }
+    se23_pose_t gamma_dt;
+    const se23_pose_t *gamma = &model->gamma;
+    if (se23_fabs(s->dt - model->dt) > GAMMA_CACHE_ULPS * SE23_EPSILON * model->dt) {
+        st = se23_earth_gamma(&model->g_n, &model->w_ie_n, s->dt, &gamma_dt);
+        if (st != SE23_OK) {
+            return st;
+        }
+        gamma = &gamma_dt;
+    }
+    se23_pose_t ups;
+    exact_increment(s, &ups);
+    se23_imu_transition(gamma, T, &ups, s->dt, T_next);
+    return SE23_OK;
+}
+
+/* Tout = (R, v + sign Omega x p, p). */
+static void shift_velocity(const se23_earth_model_t *model, const se23_pose_t *T,
+                           se23_real_t sign, se23_pose_t *Tout)
+{
+    se23_vec3_t wxp;
+    se23_v3_cross(&model->w_ie_n, &T->p, &wxp);
+    se23_pose_t out = *T;
+    se23_v3_axpy(&T->v, sign, &wxp, &out.v);
+    *Tout = out;
+}
+
+void se23_imu_carried_from_user(const se23_earth_model_t *model,
+                                const se23_pose_t *T, se23_pose_t *Tc)
+{
+    shift_velocity(model, T, SE23_R(1), Tc);
+}
+
+void se23_imu_user_from_carried(const se23_earth_model_t *model,
+                                const se23_pose_t *Tc, se23_pose_t *T)
+{
+    shift_velocity(model, Tc, SE23_R(-1), T);
+}
