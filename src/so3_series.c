@@ -4,8 +4,7 @@
  * cancellation; the Taylor series with SERIES_TERMS terms truncates at about
  * theta^18/19!. Double: Taylor below theta = 1 (truncation < 1e-17, closed
  * form cancellation above it < 3e-15). Float: Taylor below theta = 2, where
- * the closed forms are within a few FLT_EPSILON. The J^-1 coefficient's
- * series has radius 2 pi and its own, smaller thresholds.
+ * the closed forms are within a few FLT_EPSILON.
  */
 #include "so3_series.h"
 
@@ -15,10 +14,8 @@
 
 #if SE23_CFG_DOUBLE
 #define TAYLOR_MAX SE23_R(1.0)
-#define JL_INV_TAYLOR_MAX SE23_R(0.5)
 #else
 #define TAYLOR_MAX SE23_R(2.0)
-#define JL_INV_TAYLOR_MAX SE23_R(1.5)
 #endif
 
 /* 1/n!, n = 0..20 */
@@ -68,18 +65,6 @@ static const se23_real_t k2_taylor[SERIES_TERMS] = {
     SE23_R(1.0 / 376610217984000.0),
     SE23_R(1.0 / 128047474114560000.0),
 };
-/* e Taylor coefficients: (-1)^(n+1) B_2n / (2n)!, n = 1..9 (B: Bernoulli) */
-static const se23_real_t e_taylor[SERIES_TERMS] = {
-    SE23_R(1.0 / 12.0),
-    SE23_R(1.0 / 720.0),
-    SE23_R(1.0 / 30240.0),
-    SE23_R(1.0 / 1209600.0),
-    SE23_R(1.0 / 47900160.0),
-    SE23_R(691.0 / 1307674368000.0),
-    SE23_R(1.0 / 74724249600.0),
-    SE23_R(3617.0 / 10670622842880000.0),
-    SE23_R(43867.0 / 5109094217170944000.0),
-};
 
 /* sum_{k < SERIES_TERMS} coef[k * stride] * x^k, by Horner. */
 static se23_real_t horner(const se23_real_t *coef, int stride, se23_real_t x)
@@ -127,14 +112,16 @@ void se23_so3_k_coeffs(se23_real_t theta, se23_real_t *k1, se23_real_t *k2)
     *k2 = (SE23_R(0.5) * t + one_minus_cos - theta * s) / (t * t);
 }
 
+/* With x = theta/2: 1 - x cot x = (sin x - x cos x)/sin x = x^2 k1(x)/c1(x),
+ * so e = k1(x) / (4 c1(x)): no cancellation at any angle, and the only
+ * singularity is c1(x) = 0 at theta = 2 pi. */
 se23_real_t se23_so3_jl_inv_coeff(se23_real_t theta)
 {
-    const se23_real_t t = theta * theta;
-    if (theta < JL_INV_TAYLOR_MAX) {
-        return horner(e_taylor, 1, t);
+    const se23_real_t x = SE23_R(0.5) * theta;
+    const se23_real_t t = x * x;
+    if (x < TAYLOR_MAX) {
+        return horner(k1_taylor, 1, -t) / (SE23_R(4) * horner(&inv_fact[1], 2, -t));
     }
-    /* (theta/2) cot(theta/2) = theta sin(theta) / (2 (1 - cos theta)) */
-    const se23_real_t half = SE23_R(0.5) * theta;
-    const se23_real_t half_cot = half * se23_cos(half) / se23_sin(half);
-    return (SE23_R(1) - half_cot) / t;
+    const se23_real_t s = se23_sin(x);
+    return (s - x * se23_cos(x)) / (SE23_R(4) * t * s);
 }

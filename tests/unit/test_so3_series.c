@@ -1,0 +1,111 @@
+/* Tests of src/so3_series.c: every coefficient against its closed form
+ * evaluated in long double, across both branches and at their seams. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+
+#include <cmocka.h>
+
+#include "se23_test.h"
+#include "so3_series.h"
+
+/* Reference in long double: below theta = 1 each Taylor series summed
+ * term by term to theta^30 (truncation < 1e-30, no cancellation; e, whose
+ * series converges slowly, only below 0.3); above,
+ * the closed forms, whose cancellation is then below 1e-17. */
+static void expected_coeffs(long double t, long double out[7])
+{
+    long double t2 = t * t;
+    if (t < 1.0L) {
+        /* c_m = sum (-t2)^k/(2k+m)!; k1, k2 likewise; e from its table. */
+        static const long double e_series[8] = {
+            1.0L / 12, 1.0L / 720, 1.0L / 30240, 1.0L / 1209600, 1.0L / 47900160,
+            691.0L / 1307674368000, 1.0L / 74724249600, 3617.0L / 10670622842880000};
+        for (int i = 0; i < 7; ++i) {
+            out[i] = 0;
+        }
+        for (int m = 1; m <= 4; ++m) {
+            long double term = 1;
+            for (int j = 2; j <= m; ++j) {
+                term /= j;
+            }
+            for (int k = 0; k < 16; ++k) {
+                out[m - 1] += term;
+                term *= -t2 / ((2 * k + m + 1) * (2 * k + m + 2));
+            }
+        }
+        long double f1 = 1, f2 = 2; /* (2k+1)!, (2k+2)! */
+        long double p = 1;
+        for (int k = 0; k < 16; ++k) {
+            out[4] += p / (f1 * (2 * k + 3));
+            out[5] += p / (f2 * (2 * k + 4));
+            p *= -t2;
+            f1 *= (2 * k + 2) * (2 * k + 3);
+            f2 *= (2 * k + 3) * (2 * k + 4);
+        }
+        long double q = 1;
+        for (int k = 0; k < 8; ++k) {
+            out[6] += e_series[k] * q;
+            q *= t2;
+        }
+        if (t > 0.3L) { /* the e series converges slowly: closed form */
+            out[6] = (1 - (t / 2) * cosl(t / 2) / sinl(t / 2)) / t2;
+        }
+        return;
+    }
+    long double s = sinl(t), c = cosl(t);
+    out[0] = s / t;
+    out[1] = (1 - c) / t2;
+    out[2] = (t - s) / (t2 * t);
+    out[3] = (t2 / 2 + c - 1) / (t2 * t2);
+    out[4] = (s - t * c) / (t2 * t);
+    out[5] = (t2 / 2 - c - t * s + 1) / (t2 * t2);
+    out[6] = (1 - (t / 2) * cosl(t / 2) / sinl(t / 2)) / t2;
+}
+
+static void check_at(se23_real_t theta)
+{
+    long double e[7];
+    expected_coeffs((long double)theta, e);
+    se23_so3_coeffs_t c;
+    se23_real_t k1, k2;
+    se23_so3_coeffs(theta, &c);
+    se23_so3_k_coeffs(theta, &k1, &k2);
+    const se23_real_t got[7] = {c.c1, c.c2, c.c3, c.c4, k1, k2,
+                                se23_so3_jl_inv_coeff(theta)};
+    for (int i = 0; i < 7; ++i) {
+        /* The issue's bound: 16 epsilon relative, both precisions. c1 and
+         * k1 have zeros (sin theta = 0, tan theta = theta): relative to
+         * their size, as there the closed form is only absolutely accurate. */
+        double scale = fabs((double)e[i]) > 0.05 ? fabs((double)e[i]) : 0.05;
+        if (!se23t_near(got[i], (double)e[i], 16 * SE23T_EPS * scale, 0)) {
+            print_error("coefficient %d at theta = %.9g\n", i, (double)theta);
+        }
+        assert_near(got[i], (double)e[i], 16 * SE23T_EPS * scale, 0);
+    }
+}
+
+static void test_so3_series_coeffs_match_closed_forms(void **state)
+{
+    (void)state;
+    const double angles[] = {0.0, 1e-30, 1e-8, 1e-5, 1e-3, 0.1, 0.4999, 0.5, 0.5001,
+                             0.9999, 1.0, 1.0001, 1.4999, 1.5, 1.5001, 1.9999,
+                             2.0, 2.0001, 3.0, 3.14159, 4.0, 5.0, 6.0};
+    for (size_t i = 0; i < sizeof angles / sizeof angles[0]; ++i) {
+        check_at((se23_real_t)angles[i]);
+    }
+    se23t_rng_t rng;
+    se23t_rng_seed(&rng, 21);
+    for (int n = 0; n < 2000; ++n) {
+        check_at((se23_real_t)se23t_uniform(&rng, 0, 6.2));
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_so3_series_coeffs_match_closed_forms),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
