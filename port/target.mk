@@ -17,12 +17,29 @@ TGT_CFLAGS := $(WARN) -O2 -g -ffunction-sections -fdata-sections \
 TGT_LDFLAGS := -nostartfiles --specs=nano.specs --specs=rdimon.specs \
                -Lport/cortex-m -Wl,--gc-sections
 TGT_PORT_OBJS = $(TGT)/$(1)/port/startup.o $(TGT)/$(1)/port/se23_port.o
+TGT_TV_OBJS = $(TGT)/$(1)/tv_runner.o $(TGT)/$(1)/tv_custom.o
+
+# Reference vectors: tools/target/gen_vectors (host, C++) from the Eigen
+# reference library that the CMake test tree builds (tests/reference).
+TGT_REF_LIB := $(BUILD)/cmake-double/tests/reference/libse23_reference.a
+TGT_GEN := $(TGT)/gen_vectors
+# The routine whose first expected value the runner's own test corrupts.
+TGT_CORRUPT := se23_so3_exp
 
 TGT_VARIANTS := m4f-float m7-double
 TGT_BOARD_m4f-float := mps2-an386
 TGT_BOARD_m7-double := mps2-an500
 
-.PHONY: target test-target
+.PHONY: target test-target tgt-always
+
+$(TGT_REF_LIB): $(BUILD)/cmake-double/CMakeCache.txt tgt-always
+	cmake --build $(BUILD)/cmake-double --target se23_reference -j 1 >/dev/null
+$(TGT_GEN): tools/target/gen_vectors.cpp tests/target/tv.h tests/target/tv_list.h \
+            tests/reference/reference.hpp $(LIB_HDRS) $(TGT_REF_LIB)
+	mkdir -p $(@D)
+	$(CXX) -std=c++17 -O1 -Wall -Wextra -Werror -isystem /usr/include/eigen3 \
+	    -Iinclude -Itests/reference -Itests/target -DSE23_CFG_DOUBLE=1 \
+	    $< $(TGT_REF_LIB) -o $@
 
 # $(call tgt_variant,variant,arch flags,SE23_CFG_DOUBLE)
 define tgt_variant
@@ -33,8 +50,22 @@ $(TGT)/$(1)/port/%.o: port/cortex-m/%.c port/se23_port.h | $(TGT)/$(1)/port
 $(TGT)/$(1)/%.o: tests/target/%.c $(LIB_HDRS) $(wildcard tests/target/*.h) | $(TGT)/$(1)/port
 	$(ARM_CC) $(2) $(TGT_CFLAGS) -Itests/target -I$(TGT)/$(1) \
 	    -DSE23_CFG_DOUBLE=$(3) -c $$< -o $$@
+$(TGT)/$(1)/%.o: $(TGT)/$(1)/%.c tests/target/tv.h tests/target/tv_list.h $(LIB_HDRS)
+	$(ARM_CC) $(2) $(TGT_CFLAGS) -Itests/target -DSE23_CFG_DOUBLE=$(3) -c $$< -o $$@
+$(TGT)/$(1)/tv_data.c: $(TGT_GEN) | $(TGT)/$(1)/port
+	$(TGT_GEN) $(if $(filter 1,$(3)),double,float) > $$@.tmp && mv $$@.tmp $$@
+$(TGT)/$(1)/tv_data_corrupt.c: $(TGT_GEN) | $(TGT)/$(1)/port
+	$(TGT_GEN) $(if $(filter 1,$(3)),double,float) --corrupt $(TGT_CORRUPT) > $$@.tmp && mv $$@.tmp $$@
 $(TGT)/$(1)/port:
 	mkdir -p $$@
+$(TGT)/$(1)/tv_test.elf: $(call TGT_TV_OBJS,$(1)) $(TGT)/$(1)/tv_data.o $(call TGT_PORT_OBJS,$(1)) \
+                         $(BUILD)/lib-$(1)/libse23.a port/cortex-m/sections.ld
+	$(ARM_CC) $(2) $(TGT_LDFLAGS) -u _printf_float -Tport/cortex-m/$(TGT_BOARD_$(1)).ld \
+	    -Wl,-Map,$$(@:.elf=.map) $$(filter %.o %.a,$$^) -lm -o $$@
+$(TGT)/$(1)/tv_corrupt.elf: $(call TGT_TV_OBJS,$(1)) $(TGT)/$(1)/tv_data_corrupt.o $(call TGT_PORT_OBJS,$(1)) \
+                            $(BUILD)/lib-$(1)/libse23.a port/cortex-m/sections.ld
+	$(ARM_CC) $(2) $(TGT_LDFLAGS) -u _printf_float -Tport/cortex-m/$(TGT_BOARD_$(1)).ld \
+	    $$(filter %.o %.a,$$^) -lm -o $$@
 $(TGT)/$(1)/port_selftest.elf: $(TGT)/$(1)/port_selftest.o $(call TGT_PORT_OBJS,$(1)) \
                                port/cortex-m/sections.ld port/cortex-m/$(TGT_BOARD_$(1)).ld
 	$(ARM_CC) $(2) $(TGT_LDFLAGS) -Tport/cortex-m/$(TGT_BOARD_$(1)).ld \
@@ -43,8 +74,8 @@ endef
 $(eval $(call tgt_variant,m4f-float,$(M4F_FLAGS),0))
 $(eval $(call tgt_variant,m7-double,$(M7_FLAGS),1))
 
-TGT_RUN_IMAGES := port_selftest
-TGT_IMAGES := $(foreach v,$(TGT_VARIANTS),$(foreach i,$(TGT_RUN_IMAGES),$(TGT)/$(v)/$(i).elf))
+TGT_RUN_IMAGES := port_selftest tv_test
+TGT_IMAGES := $(foreach v,$(TGT_VARIANTS),$(foreach i,$(TGT_RUN_IMAGES) tv_corrupt,$(TGT)/$(v)/$(i).elf))
 
 target: $(TGT_IMAGES)
 
@@ -60,3 +91,12 @@ $(TGT)/host/port_selftest: tests/target/port_selftest.c port/posix/se23_port.c p
 	$(CC) $(WARN) -O2 -Iinclude -Iport $(filter %.c,$^) -o $@
 test-port-posix: $(TGT)/host/port_selftest
 	$<
+
+# The runner's own test: the image built from vectors with one corrupted
+# expected value (TGT_CORRUPT) must report exactly one failure.
+.PHONY: test-target-corrupt
+test-target-corrupt: target
+	@fail=0; $(foreach v,$(TGT_VARIANTS),\
+	  $(QEMU_RUN) $(TGT_BOARD_$(v)) $(TGT)/$(v)/tv_corrupt.elf; rc=$$?; \
+	  if [ $$rc -eq 1 ]; then echo "$(v): corrupted vector detected (exit 1, as required)"; \
+	  else echo "$(v): corrupted vector gave exit $$rc, expected 1"; fail=1; fi;) exit $$fail

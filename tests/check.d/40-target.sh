@@ -1,7 +1,16 @@
 # Cortex-M4F (float, mps2-an386) and Cortex-M7 (double, mps2-an500) images
-# on qemu-system-arm; port self-tests; the template port compiles.
+# on qemu-system-arm (port/target.mk): the port self-test, the reference
+# vectors of every public routine (tests/target), and the runner's own test
+# (one corrupted vector must fail exactly one check). The POSIX port runs the
+# same self-test on the host; the template port must compile.
 check port-posix make -s test-port-posix BUILD="$BUILD"
 check port-template cc -std=c99 -Wall -Wextra -Wpedantic -Werror -Iport \
     -fsyntax-only port/template/se23_port.c
 check target-images make -s -j1 target BUILD="$BUILD"
-check target-qemu make -s test-target BUILD="$BUILD"
+for v in m4f-float:mps2-an386 m7-double:mps2-an500; do
+    for img in port_selftest tv_test; do
+        check "target-${v%%:*}-$img" sh tools/target/qemu-run.sh "${v#*:}" \
+            "$BUILD/target/${v%%:*}/$img.elf"
+    done
+done
+check target-corrupt-vector-fails make -s test-target-corrupt BUILD="$BUILD"

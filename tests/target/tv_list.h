@@ -1,0 +1,52 @@
+/*
+ * The routines the target images test against reference vectors: one row
+ * per public function (X-macro list; no include guard on purpose). Read by
+ * tests/target/tv.h and tv_runner.c on the target and by
+ * tools/target/gen_vectors.cpp on the host, which must have a generator of
+ * the same name (it refuses to run otherwise). Adding a routine:
+ *   1. one row here, of the kind matching its signature;
+ *   2. one entry in the generator table of tools/target/gen_vectors.cpp
+ *      (inputs + expected outputs from the Eigen reference).
+ * Kinds (A, B inputs, O output; all structs of se23_real_t):
+ *   TV_V0(fn, O, tol)          void fn(O *)
+ *   TV_V1(fn, A, O, tol)       void fn(const A *, O *)
+ *   TV_S1(fn, A, O, tol)       se23_status_t fn(const A *, O *)
+ *   TV_V2(fn, A, B, O, tol)    void fn(const A *, const B *, O *)
+ *   TV_S2(fn, A, B, O, tol)    se23_status_t fn(const A *, const B *, O *)
+ *   TV_C1(fn, A, tol)          se23_status_t fn(const A *)  (a check)
+ *   TV_CUSTOM(fn, n_in, n_out, tol)  anything else: write tv_call_<fn> in
+ *                              tests/target/tv_custom.c
+ * tol: outputs must satisfy |got - expected| <= tol * eps * (1 + max|expected|)
+ * (eps of the build's precision, max over the output row).
+ * Routines tested on the target without vectors (tv_runner.c): se23_status_str.
+ */
+#include "se23/se23.h"
+#include "se23/so3.h"
+
+/* so3.h */
+TV_V1(se23_so3_hat, se23_vec3_t, se23_mat3_t, 1)
+TV_V1(se23_so3_vee, se23_mat3_t, se23_vec3_t, 1)
+TV_S1(se23_so3_exp, se23_vec3_t, se23_mat3_t, 8)
+TV_S1(se23_so3_log, se23_mat3_t, se23_vec3_t, 16)
+TV_S1(se23_so3_jl, se23_vec3_t, se23_mat3_t, 8)
+TV_S1(se23_so3_jl_inv, se23_vec3_t, se23_mat3_t, 16)
+TV_S1(se23_so3_jr, se23_vec3_t, se23_mat3_t, 8)
+TV_S1(se23_so3_h, se23_vec3_t, se23_mat3_t, 8)
+TV_S1(se23_so3_k, se23_vec3_t, se23_mat3_t, 8)
+TV_C1(se23_so3_check, se23_mat3_t, 0)
+TV_S1(se23_so3_normalize, se23_mat3_t, se23_mat3_t, 8)
+
+/* se23.h */
+TV_V0(se23_identity, se23_pose_t, 0)
+TV_V2(se23_compose, se23_pose_t, se23_pose_t, se23_pose_t, 8)
+TV_V1(se23_inverse, se23_pose_t, se23_pose_t, 8)
+TV_V2(se23_act, se23_pose_t, se23_vec3_t, se23_vec3_t, 8)
+TV_V1(se23_hat, se23_tangent_t, se23_mat5_t, 1)
+TV_V1(se23_vee, se23_mat5_t, se23_tangent_t, 1)
+TV_V1(se23_to_mat5, se23_pose_t, se23_mat5_t, 0)
+TV_S1(se23_from_mat5, se23_mat5_t, se23_pose_t, 0)
+TV_S1(se23_exp, se23_tangent_t, se23_pose_t, 16)
+TV_S1(se23_log, se23_pose_t, se23_tangent_t, 16)
+TV_V1(se23_adjoint, se23_pose_t, se23_mat9_t, 8)
+TV_V1(se23_adjoint_inv, se23_pose_t, se23_mat9_t, 8)
+TV_C1(se23_pose_check, se23_pose_t, 0)
