@@ -5,6 +5,7 @@
 #include "linalg.h"
 #include "se23/so3.h"
 #include "se23_math.h"
+#include "so3_series.h"
 
 static void block_get(const se23_tangent_t *xi, int first, se23_vec3_t *out)
 {
@@ -147,10 +148,14 @@ se23_status_t se23_exp(const se23_tangent_t *xi, se23_pose_t *T)
     block_get(xi, SE23_IDX_PHI, &phi);
     block_get(xi, SE23_IDX_NU, &nu);
     block_get(xi, SE23_IDX_RHO, &rho);
+    /* exp(phi^) = I + c1 W + c2 W^2 and J_l = I + c2 W + c3 W^2 share
+     * their coefficients: evaluate them once. */
+    se23_so3_coeffs_t c;
+    se23_so3_coeffs(se23_sqrt(se23_v3_dot(&phi, &phi)), &c);
     se23_pose_t out;
     se23_mat3_t J;
-    (void)se23_so3_exp(&phi, &out.R); /* cannot fail: phi is finite */
-    (void)se23_so3_jl(&phi, &J);
+    se23_m3_series(SE23_R(1), c.c1, c.c2, &phi, &out.R);
+    se23_m3_series(SE23_R(1), c.c2, c.c3, &phi, &J);
     se23_m3_mul_v3(&J, &nu, &out.v);
     se23_m3_mul_v3(&J, &rho, &out.p);
     *T = out;
