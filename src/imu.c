@@ -4,6 +4,7 @@
 #include "argcheck.h"
 #include "linalg.h"
 #include "se23/se23.h"
+#include "se23/so3.h"
 #include "se23_math.h"
 #include "so3_series.h"
 
@@ -88,7 +89,15 @@ void se23_imu_transition(const se23_pose_t *gamma, const se23_pose_t *T,
     se23_pose_t P = *T; /* Phi_t(T) */
     se23_v3_axpy(&P.p, t, &P.v, &P.p);
     se23_compose(&P, ups, &P);
-    se23_compose(gamma, &P, out);
+    se23_compose(gamma, &P, &P);
+    /* Each product leaves R about one epsilon off SO(3), and with repeated
+     * samples the error adds up linearly: in float a constant sample exceeds
+     * SE23_CFG_ROT_TOL within ~100 steps. Re-orthonormalise (a no-op below
+     * 4 eps, else one Newton-Schulz step). It only fails, writing nothing,
+     * when R was no rotation in the first place, which this unchecked
+     * function passes through. */
+    (void)se23_so3_normalize(&P.R, &P.R);
+    *out = P;
 }
 
 se23_status_t se23_imu_step(const se23_earth_model_t *model,

@@ -77,8 +77,9 @@ se23_status_t se23_imu_increment_euler(const se23_imu_sample_t *s,
  * out = Gamma Phi_t(T) Upsilon  (paper eq. discrete), Phi_t(R, v, p) =
  * (R, v, p + t v). The building block of se23_imu_step (Gamma = Gamma'(dt),
  * one sample), of preintegration (Gamma = I, accumulating Deltas) and of
- * prediction (Gamma = Gamma'(Delta t), one factor). No checks: NaN in gives
- * NaN out.
+ * prediction (Gamma = Gamma'(Delta t), one factor). out.R is passed through
+ * se23_so3_normalize, so that rounding drift never accumulates (a no-op
+ * while the drift is below 4 eps). No checks: NaN in gives NaN out.
  */
 void se23_imu_transition(const se23_pose_t *gamma, const se23_pose_t *T,
                          const se23_pose_t *ups, se23_real_t t,
@@ -91,9 +92,8 @@ void se23_imu_transition(const se23_pose_t *gamma, const se23_pose_t *T,
  * Gamma' is model->gamma when s->dt equals model->dt to within 4 ulp, and
  * is recomputed for s->dt otherwise (timing jitter costs one more
  * se23_earth_gamma, not accuracy).
- * In the float build R drifts from SO(3) by rounding; re-orthonormalise it
- * with se23_so3_normalize every few hundred steps, or the drift eventually
- * exceeds SE23_CFG_ROT_TOL and the step refuses the state.
+ * R_next is kept orthonormal to rounding (se23_imu_transition), so a long
+ * run never drifts out of the SO(3) check.
  * @return SE23_ERR_NONFINITE (NaN/Inf in s or T), SE23_ERR_DT unless
  *         0 < s->dt <= model->dt_max, SE23_ERR_NOT_ROTATION (T.R not in
  *         SO(3) within SE23_CFG_ROT_TOL); T_next is untouched on error.
