@@ -100,3 +100,49 @@ test-target-corrupt: target
 	  $(QEMU_RUN) $(TGT_BOARD_$(v)) $(TGT)/$(v)/tv_corrupt.elf; rc=$$?; \
 	  if [ $$rc -eq 1 ]; then echo "$(v): corrupted vector detected (exit 1, as required)"; \
 	  else echo "$(v): corrupted vector gave exit $$rc, expected 1"; fail=1; fi;) exit $$fail
+
+# Fixtures the gates must reject (tests/target/gate_fixtures), compiled like
+# the M4F float library: $(TGT)/gate-fixtures/<name>/<name>.o (+ .su, .ci).
+TGT_FIXTURES := bad_symbols bad_vla bad_recursion
+.PHONY: gate-fixtures
+gate-fixtures: $(foreach f,$(TGT_FIXTURES),$(TGT)/gate-fixtures/$(f)/$(f).o)
+define tgt_fixture
+$(TGT)/gate-fixtures/$(1)/$(1).o: tests/target/gate_fixtures/$(1).c
+	mkdir -p $$(@D)
+	cd $$(@D) && $(ARM_CC) $(M4F_FLAGS) $(ARM_CFLAGS) -std=c99 -O2 -fstack-usage \
+	    -c $(CURDIR)/$$< -o $(1).o
+endef
+$(foreach f,$(TGT_FIXTURES),$(eval $(call tgt_fixture,$(f))))
+
+# The Cortex-M port's options header (port/cortex-m/se23_port_opts.h) must
+# compile with the library's strict flags and replace every sqrt call.
+.PHONY: port-opts
+port-opts: $(patsubst src/%.c,$(TGT)/m4f-float/opts/%.o,$(LIB_SRCS)) \
+           $(patsubst src/%.c,$(TGT)/m7-double/opts/%.o,$(LIB_SRCS))
+	@! arm-none-eabi-nm -u $^ | grep -Ew 'sqrtf?' || \
+	    { echo "sqrt still called with the port's options"; exit 1; }
+	@echo "port-opts: $(words $^) objects, no sqrt/sqrtf call"
+$(TGT)/m4f-float/opts/%.o: src/%.c $(LIB_HDRS) port/cortex-m/se23_port_opts.h
+	mkdir -p $(@D)
+	$(ARM_CC) $(filter-out -fstack-usage,$(LIB_CFLAGS)) $(M4F_FLAGS) -DSE23_CFG_DOUBLE=0 \
+	    -Iport/cortex-m -DSE23_CFG_OPTS_FILE='"se23_port_opts.h"' -c $< -o $@
+$(TGT)/m7-double/opts/%.o: src/%.c $(LIB_HDRS) port/cortex-m/se23_port_opts.h
+	mkdir -p $(@D)
+	$(ARM_CC) $(filter-out -fstack-usage,$(LIB_CFLAGS)) $(M7_FLAGS) -DSE23_CFG_DOUBLE=1 \
+	    -Iport/cortex-m -DSE23_CFG_OPTS_FILE='"se23_port_opts.h"' -c $< -o $@
+
+# Gates on the library objects built for the target (also run one by one by
+# tests/check.d/45-gates.sh): no soft double in the float build, no heap and
+# no stdio in either, worst-case stack per public function and code size
+# against tests/target/budgets/.
+PY3 ?= /usr/bin/python3
+TGT_BUDGETS := tests/target/budgets
+.PHONY: gates-target
+gates-target: cross target
+	$(PY3) tools/target/symbol_gate.py soft-double $(BUILD)/lib-m4f-float/*.o
+	$(foreach v,$(TGT_VARIANTS),$(PY3) tools/target/symbol_gate.py heap $(BUILD)/lib-$(v)/*.o &&) true
+	$(foreach v,$(TGT_VARIANTS),$(PY3) tools/target/symbol_gate.py stdio $(BUILD)/lib-$(v)/*.o &&) true
+	$(foreach v,$(TGT_VARIANTS),$(PY3) tools/target/stack_gate.py $(BUILD)/lib-$(v) \
+	    $(TGT)/$(v)/tv_test.elf $(TGT_BUDGETS)/stack.txt $(v) &&) true
+	$(foreach v,$(TGT_VARIANTS),$(PY3) tools/target/size_gate.py $(BUILD)/lib-$(v)/libse23.a \
+	    $(TGT_BUDGETS)/size.txt $(v) &&) true
