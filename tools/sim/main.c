@@ -1,0 +1,434 @@
+/*
+ * se23-sim: simulated IMU (+ truth, GNSS fixes, initial estimate) over LCM.
+ *
+ * The vehicle follows an analytic reference trajectory (traj.h). For each
+ * IMU interval the true inputs are the reference body rate and specific
+ * force at the interval midpoint (including the Earth-rate, Coriolis and
+ * centrifugal terms of paper eq. nav:eq_Coriolis), plus a small tracking
+ * correction that keeps the truth on the reference over long runs. The
+ * truth is then the RK4 solution of the navigation equations with those
+ * inputs held constant over the interval (truth.h): exact for the
+ * zero-order-hold model, independent of the library. The published sample
+ * adds the IMU errors (imu_err.h).
+ *
+ * Run with --help for the options.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <lcm/lcm.h>
+#include <math.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../lcm/harness.h"
+#include "imu_err.h"
+#include "truth.h"
+#include "se23lcm_gnss_fix.h"
+#include "se23lcm_imu_sample.h"
+#include "se23lcm_nav_state.h"
+#include "se23lcm_sim_info.h"
+#include "se23lcm_truth.h"
+#include "traj.h"
+
+#define DEG_L (3.141592653589793238462643383279502884L / 180.0L)
+#define H_MAX 1.25e-3 /* largest RK4 sub-step [s] */
+
+typedef struct {
+    int scenario;
+    double duration;
+    double imu_rate;
+    int profile;
+    int earth;
+    double lat_deg;
+    double gnss_rate;
+    double gnss_sp[3];
+    double gnss_sv[3];
+    double truth_rate;
+    int64_t seed;
+    double init_sigma[3]; /* attitude [deg], velocity [m/s], position [m] */
+    const char *url;
+    double speed; /* < 0: default */
+    int progress;
+    int track;
+} sim_opts_t;
+
+static volatile sig_atomic_t stop_flag = 0;
+
+static void on_signal(int sig)
+{
+    (void)sig;
+    stop_flag = 1;
+}
+
+static void usage(FILE *f)
+{
+    fprintf(f,
+            "usage: se23-sim [options]\n"
+            "  --scenario static|uav|car|nav   trajectory (uav)\n"
+            "  --duration S                    length [s] (scenario default: 60/60/120/3600)\n"
+            "  --imu-rate HZ                   100..2000 (200)\n"
+            "  --imu perfect|mems|tactical|navigation   error profile (mems)\n"
+            "  --earth on|off                  Earth rotation (on)\n"
+            "  --lat DEG                       latitude of the origin (45)\n"
+            "  --gnss-rate HZ                  GNSS fixes, 0 = none (5)\n"
+            "  --gnss-sigma-p X,Y,Z            position noise [m] (1.5,1.5,3)\n"
+            "  --gnss-sigma-v X,Y,Z            velocity noise [m/s] (0.1,0.1,0.2)\n"
+            "  --truth-rate HZ                 truth messages (50)\n"
+            "  --seed N                        random seed (1)\n"
+            "  --init-sigma DEG,MPS,M          initial attitude/velocity/position error\n"
+            "                                  sigma of SE23_INIT (1,0.2,2); 0,0,0: exact\n"
+            "  --url URL                       LCM URL (file://sim.log?mode=w)\n"
+            "  --speed X                       pacing: 1 real time, 0 flat out\n"
+            "                                  (default 0 for file://, else 1)\n"
+            "  --no-track                      no tracking correction (tests)\n"
+            "  --progress                      progress line on stderr\n");
+}
+
+static int parse_args(int argc, char **argv, sim_opts_t *o)
+{
+    int i;
+    int64_t seed;
+    o->scenario = TRAJ_UAV;
+    o->duration = -1.0;
+    o->imu_rate = 200.0;
+    o->profile = HARNESS_IMU_MEMS;
+    o->earth = 1;
+    o->lat_deg = 45.0;
+    o->gnss_rate = 5.0;
+    o->gnss_sp[0] = 1.5;
+    o->gnss_sp[1] = 1.5;
+    o->gnss_sp[2] = 3.0;
+    o->gnss_sv[0] = 0.1;
+    o->gnss_sv[1] = 0.1;
+    o->gnss_sv[2] = 0.2;
+    o->truth_rate = 50.0;
+    o->seed = 1;
+    o->init_sigma[0] = 1.0;
+    o->init_sigma[1] = 0.2;
+    o->init_sigma[2] = 2.0;
+    o->url = "file://sim.log?mode=w";
+    o->speed = -1.0;
+    o->progress = 0;
+    o->track = 1;
+    for (i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        const char *v = (i + 1 < argc) ? argv[i + 1] : NULL;
+        int bad = 0;
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            usage(stdout);
+            exit(0);
+        } else if (strcmp(a, "--progress") == 0) {
+            o->progress = 1;
+            continue;
+        } else if (strcmp(a, "--no-track") == 0) {
+            o->track = 0;
+            continue;
+        }
+        if (v == NULL) {
+            fprintf(stderr, "se23-sim: %s needs a value (or is unknown)\n", a);
+            return -1;
+        }
+        i++;
+        if (strcmp(a, "--scenario") == 0) {
+            o->scenario = traj_find(v);
+            bad = o->scenario < 0;
+        } else if (strcmp(a, "--duration") == 0) {
+            bad = harness_parse_double(v, &o->duration) || o->duration <= 0.0;
+        } else if (strcmp(a, "--imu-rate") == 0) {
+            bad = harness_parse_double(v, &o->imu_rate) || o->imu_rate < 100.0 ||
+                  o->imu_rate > 2000.0;
+        } else if (strcmp(a, "--imu") == 0) {
+            o->profile = harness_imu_profile_find(v);
+            bad = o->profile < 0;
+        } else if (strcmp(a, "--earth") == 0) {
+            o->earth = strcmp(v, "on") == 0;
+            bad = !o->earth && strcmp(v, "off") != 0;
+        } else if (strcmp(a, "--lat") == 0) {
+            bad = harness_parse_double(v, &o->lat_deg) || fabs(o->lat_deg) > 90.0;
+        } else if (strcmp(a, "--gnss-rate") == 0) {
+            bad = harness_parse_double(v, &o->gnss_rate) || o->gnss_rate < 0.0;
+        } else if (strcmp(a, "--gnss-sigma-p") == 0) {
+            bad = harness_parse_vec3(v, o->gnss_sp);
+        } else if (strcmp(a, "--gnss-sigma-v") == 0) {
+            bad = harness_parse_vec3(v, o->gnss_sv);
+        } else if (strcmp(a, "--truth-rate") == 0) {
+            bad = harness_parse_double(v, &o->truth_rate) || o->truth_rate <= 0.0;
+        } else if (strcmp(a, "--seed") == 0) {
+            bad = harness_parse_i64(v, &seed);
+            o->seed = seed;
+        } else if (strcmp(a, "--init-sigma") == 0) {
+            bad = harness_parse_vec3(v, o->init_sigma) || o->init_sigma[0] < 0.0 ||
+                  o->init_sigma[1] < 0.0 || o->init_sigma[2] < 0.0;
+        } else if (strcmp(a, "--url") == 0) {
+            o->url = v;
+        } else if (strcmp(a, "--speed") == 0) {
+            bad = harness_parse_double(v, &o->speed) || o->speed < 0.0;
+        } else {
+            fprintf(stderr, "se23-sim: unknown option %s\n", a);
+            return -1;
+        }
+        if (bad) {
+            fprintf(stderr, "se23-sim: bad value for %s: %s\n", a, v);
+            return -1;
+        }
+    }
+    if (o->duration < 0.0) {
+        o->duration = traj_default_duration((traj_scenario_t)o->scenario);
+    }
+    if (o->speed < 0.0) {
+        o->speed = (strncmp(o->url, "file://", 7) == 0) ? 0.0 : 1.0;
+    }
+    return 0;
+}
+
+static void mat_out(const ld_mat3_t *R, double out[9])
+{
+    int i, j;
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) {
+            out[3 * i + j] = (double)R->m[i][j];
+        }
+    }
+}
+
+static void vec_out(const ld_vec3_t *x, double out[3])
+{
+    int i;
+    for (i = 0; i < 3; i++) {
+        out[i] = (double)x->v[i];
+    }
+}
+
+static void publish_truth(lcm_t *lc, int64_t t_ns, int64_t seq, const truth_state_t *x,
+                          const double b_g[3], const double b_a[3])
+{
+    se23lcm_truth m;
+    memset(&m, 0, sizeof m);
+    m.t_ns = t_ns;
+    m.seq = seq;
+    mat_out(&x->R, m.R_nb);
+    vec_out(&x->v, m.v_n);
+    vec_out(&x->p, m.p_n);
+    memcpy(m.b_g, b_g, sizeof m.b_g);
+    memcpy(m.b_a, b_a, sizeof m.b_a);
+    se23lcm_truth_publish(lc, HARNESS_CH_TRUTH, &m);
+}
+
+/*
+ * Initial estimate: That = T exp(-xi0), xi0 = (phi, nu, rho) ~ N(0, P0), so
+ * that T = That exp(xi0) (paper eq. error:rep1); biases estimated as 0 with
+ * their turn-on sigma. P0 is published with it.
+ */
+static void publish_init(lcm_t *lc, const sim_opts_t *o, const truth_state_t *x, rng_t *rng)
+{
+    const harness_imu_profile_t *prof = harness_imu_profile(o->profile);
+    double sig[15];
+    ld_vec3_t phi, nu, rho, mphi, Jnu, Jrho, dv, dp;
+    ld_mat3_t E, J, R;
+    se23lcm_nav_state m;
+    int i;
+    for (i = 0; i < 3; i++) {
+        sig[i] = o->init_sigma[0] * (3.14159265358979323846 / 180.0);
+        sig[3 + i] = o->init_sigma[1];
+        sig[6 + i] = o->init_sigma[2];
+        sig[9 + i] = prof->gyro_bias0;
+        sig[12 + i] = prof->accel_bias0;
+    }
+    for (i = 0; i < 3; i++) {
+        phi.v[i] = sig[i] * rng_normal(rng);
+        nu.v[i] = sig[3 + i] * rng_normal(rng);
+        rho.v[i] = sig[6 + i] * rng_normal(rng);
+    }
+    mphi = ld_scale(&phi, -1.0L);
+    E = ld_exp(&mphi);
+    J = ld_jl(&mphi);
+    Jnu = ld_mul_v(&J, &nu);
+    Jrho = ld_mul_v(&J, &rho);
+    R = ld_mul(&x->R, &E);
+    dv = ld_mul_v(&x->R, &Jnu); /* exp(-xi) = (E, -J(-phi) nu, -J(-phi) rho) */
+    dp = ld_mul_v(&x->R, &Jrho);
+    memset(&m, 0, sizeof m);
+    m.t_ns = 0;
+    m.seq = 0;
+    mat_out(&R, m.R_nb);
+    for (i = 0; i < 3; i++) {
+        m.v_n[i] = (double)(x->v.v[i] - dv.v[i]);
+        m.p_n[i] = (double)(x->p.v[i] - dp.v[i]);
+    }
+    for (i = 0; i < 15; i++) {
+        m.P[16 * i] = sig[i] * sig[i];
+    }
+    se23lcm_nav_state_publish(lc, HARNESS_CH_INIT, &m);
+}
+
+static void publish_info(lcm_t *lc, const char *ch, const sim_opts_t *o, const truth_env_t *env)
+{
+    se23lcm_sim_info m;
+    memset(&m, 0, sizeof m);
+    m.scenario = o->scenario;
+    m.imu_profile = o->profile;
+    m.earth_rotation = (int8_t)o->earth;
+    m.seed = o->seed;
+    m.imu_rate_hz = o->imu_rate;
+    m.gnss_rate_hz = o->gnss_rate;
+    m.duration_s = o->duration;
+    m.latitude_rad = o->lat_deg * (3.14159265358979323846 / 180.0);
+    vec_out(&env->g_n, m.g_n);
+    vec_out(&env->w_ie_n, m.w_ie_n);
+    se23lcm_sim_info_publish(lc, ch, &m);
+}
+
+/*
+ * True inputs over [t0, t0 + dt]: the reference body rate and specific
+ * force at the midpoint,
+ *   w_ib_b = w_nb_b + R^T w_ie_n,
+ *   f_b = R^T (a - g + 2 W v + W W p),   W = w_ie_n^,
+ * (inverting paper eq. nav:eq_Coriolis), plus a critically damped tracking
+ * correction (1 rad/s) on the truth's deviation from the reference at t0.
+ */
+static void true_inputs(const sim_opts_t *o, const truth_env_t *env, const truth_state_t *x,
+                        ld_t t0, ld_t dt, double w_out[3], double f_out[3])
+{
+    traj_point_t m = traj_eval((traj_scenario_t)o->scenario, t0 + 0.5L * dt);
+    ld_vec3_t w_ie_b = ld_tmul_v(&m.R, &env->w_ie_n);
+    ld_vec3_t w = ld_add(&m.w_nb_b, &w_ie_b);
+    ld_vec3_t cor = ld_cross(&env->w_ie_n, &m.v);
+    ld_vec3_t Wp = ld_cross(&env->w_ie_n, &m.p);
+    ld_vec3_t cen = ld_cross(&env->w_ie_n, &Wp);
+    ld_vec3_t fn, f;
+    int i;
+    for (i = 0; i < 3; i++) {
+        fn.v[i] = m.a.v[i] - env->g_n.v[i] + 2.0L * cor.v[i] + cen.v[i];
+    }
+    f = ld_tmul_v(&m.R, &fn);
+    if (o->track) {
+        traj_point_t r = traj_eval((traj_scenario_t)o->scenario, t0);
+        ld_mat3_t E = ld_mul_tn(&x->R, &r.R);
+        ld_vec3_t e_R = ld_log(&E);
+        ld_vec3_t e_v = ld_sub(&r.v, &x->v);
+        ld_vec3_t e_p = ld_sub(&r.p, &x->p);
+        ld_vec3_t corr_n, corr_b;
+        for (i = 0; i < 3; i++) {
+            corr_n.v[i] = 2.0L * e_v.v[i] + e_p.v[i];
+        }
+        corr_b = ld_tmul_v(&x->R, &corr_n);
+        w = ld_add(&w, &e_R);
+        f = ld_add(&f, &corr_b);
+    }
+    vec_out(&w, w_out);
+    vec_out(&f, f_out);
+}
+
+static void publish_gnss(lcm_t *lc, int64_t t_ns, int64_t seq, const sim_opts_t *o,
+                         const truth_state_t *x, rng_t *rng)
+{
+    se23lcm_gnss_fix m;
+    int i;
+    memset(&m, 0, sizeof m);
+    m.t_ns = t_ns;
+    m.seq = seq;
+    for (i = 0; i < 3; i++) {
+        m.p_n[i] = (double)x->p.v[i] + o->gnss_sp[i] * rng_normal(rng);
+        m.v_n[i] = (double)x->v.v[i] + o->gnss_sv[i] * rng_normal(rng);
+        m.sigma_p[i] = o->gnss_sp[i];
+        m.sigma_v[i] = o->gnss_sv[i];
+    }
+    m.has_vel = 1;
+    se23lcm_gnss_fix_publish(lc, HARNESS_CH_GNSS, &m);
+}
+
+static int64_t every(double base_rate, double rate)
+{
+    int64_t n = llround(base_rate / rate);
+    return n < 1 ? 1 : n;
+}
+
+int main(int argc, char **argv)
+{
+    sim_opts_t o;
+    truth_env_t env;
+    truth_state_t x;
+    traj_point_t r0;
+    imu_err_t err;
+    rng_t rng_gnss, rng_init;
+    lcm_t *lc;
+    int64_t dt_ns, n, k, n_truth, n_gnss, wall0, last_progress = 0, gnss_seq = 0;
+    int nsub;
+    double dt;
+
+    if (parse_args(argc, argv, &o) != 0) {
+        usage(stderr);
+        return 2;
+    }
+    lc = lcm_create(o.url);
+    if (lc == NULL) {
+        fprintf(stderr, "se23-sim: cannot open LCM URL %s\n", o.url);
+        return 1;
+    }
+    signal(SIGINT, on_signal);
+    signal(SIGTERM, on_signal);
+
+    dt_ns = llround(1e9 / o.imu_rate);
+    dt = (double)dt_ns * 1e-9;
+    n = llround(o.duration * 1e9 / (double)dt_ns);
+    nsub = (int)ceil(dt / H_MAX - 1e-9);
+    n_truth = every(o.imu_rate, o.truth_rate);
+    n_gnss = o.gnss_rate > 0.0 ? every(o.imu_rate, o.gnss_rate) : 0;
+    env = truth_env_ned(o.lat_deg * DEG_L, o.earth);
+    imu_err_init(&err, harness_imu_profile(o.profile), (uint64_t)o.seed);
+    rng_seed(&rng_gnss, (uint64_t)o.seed ^ 0x5a5a5a5a5a5a5a5aULL);
+    rng_seed(&rng_init, (uint64_t)o.seed ^ 0x0123456789abcdefULL);
+
+    r0 = traj_eval((traj_scenario_t)o.scenario, 0.0L);
+    x.R = r0.R;
+    x.v = r0.v;
+    x.p = r0.p;
+    publish_info(lc, HARNESS_CH_SIM_INFO, &o, &env);
+    publish_init(lc, &o, &x, &rng_init);
+    publish_truth(lc, 0, 0, &x, err.b_g, err.b_a);
+
+    wall0 = harness_now_ns();
+    for (k = 1; k <= n && !stop_flag; k++) {
+        double w_true[3], f_true[3], b_g[3], b_a[3];
+        ld_vec3_t w_ld, f_ld;
+        se23lcm_imu_sample s;
+        int i;
+        true_inputs(&o, &env, &x, (ld_t)((k - 1) * dt_ns) * 1e-9L, (ld_t)dt, w_true, f_true);
+        for (i = 0; i < 3; i++) { /* the truth uses exactly the published values */
+            w_ld.v[i] = (ld_t)w_true[i];
+            f_ld.v[i] = (ld_t)f_true[i];
+        }
+        truth_step(&x, &env, &w_ld, &f_ld, (ld_t)dt, nsub);
+        memcpy(b_g, err.b_g, sizeof b_g);
+        memcpy(b_a, err.b_a, sizeof b_a);
+        memset(&s, 0, sizeof s);
+        s.t_ns = k * dt_ns;
+        s.seq = k;
+        imu_err_apply(&err, w_true, f_true, dt, s.omega, s.accel);
+        if (o.speed > 0.0) {
+            harness_sleep_until_ns(wall0 + (int64_t)((double)s.t_ns / o.speed));
+        }
+        se23lcm_imu_sample_publish(lc, HARNESS_CH_IMU, &s);
+        if (k % n_truth == 0) {
+            publish_truth(lc, s.t_ns, k, &x, b_g, b_a);
+        }
+        if (n_gnss > 0 && k % n_gnss == 0) {
+            publish_gnss(lc, s.t_ns, ++gnss_seq, &o, &x, &rng_gnss);
+        }
+        if (o.progress) {
+            int64_t now = harness_now_ns();
+            if (now - last_progress > 200000000LL || k == n) {
+                fprintf(stderr, "\rse23-sim: t = %7.1f / %.1f s", (double)s.t_ns * 1e-9,
+                        (double)n * dt);
+                last_progress = now;
+            }
+        }
+    }
+    if (o.progress) {
+        fprintf(stderr, "\n");
+    }
+    publish_info(lc, HARNESS_CH_SIM_END, &o, &env);
+    lcm_destroy(lc);
+    return stop_flag ? 130 : 0;
+}

@@ -1,0 +1,43 @@
+/**
+ * @file traj.h
+ * @brief Analytic reference trajectories of the simulator (closed forms in
+ *        t, with closed-form first and second derivatives).
+ *
+ * Frames: nav = NED (origin at the start point), body = FRD. Attitude comes
+ * from ZYX Euler angles (yaw, pitch, roll) given with their rates.
+ */
+#ifndef SIM_TRAJ_H
+#define SIM_TRAJ_H
+
+#include "../lcm/ldmath.h"
+
+typedef enum {
+    TRAJ_STATIC = 0, /**< at rest, level-ish, fixed heading */
+    TRAJ_UAV = 1,    /**< smooth 3D figure-eight flight, 30 s loop, ~5 m/s, rolling/pitching */
+    TRAJ_CAR = 2,    /**< planar figure-eight, 60 s loop, ~10 m/s, heading along the velocity */
+    TRAJ_NAV = 3,    /**< aircraft in a 100 m/s coordinated turn, 20 min per circle */
+    TRAJ_COUNT = 4
+} traj_scenario_t;
+
+/** The reference state at one instant. */
+typedef struct {
+    ld_vec3_t p;      /**< position, nav [m] */
+    ld_vec3_t v;      /**< velocity dp/dt, nav [m/s] */
+    ld_vec3_t a;      /**< acceleration d2p/dt2, nav [m/s^2] */
+    ld_mat3_t R;      /**< attitude body -> nav */
+    ld_vec3_t w_nb_b; /**< angular rate of body w.r.t. nav, body frame [rad/s] */
+} traj_point_t;
+
+/** Name ("static", "uav", "car", "nav") of a scenario. */
+const char *traj_name(traj_scenario_t s);
+
+/** Scenario called name, or -1. */
+int traj_find(const char *name);
+
+/** Default duration of a scenario [s]. */
+double traj_default_duration(traj_scenario_t s);
+
+/** The reference state of scenario s at time t [s]. */
+traj_point_t traj_eval(traj_scenario_t s, ld_t t);
+
+#endif /* SIM_TRAJ_H */
