@@ -1,0 +1,391 @@
+/* Concentrated Gaussians on SE_2(3): F_k, covariance propagation with
+ * optional bias states, the noise model and the carried <-> user conversion;
+ * see gauss.h. Every covariance product goes through se23_cov_congruence
+ * with a structured map (rotation blocks and shears), never a dense 9x9 or
+ * 15x15 product. */
+#include "se23/gauss.h"
+
+#include "argcheck.h"
+#include "cov.h"
+#include "linalg.h"
+#include "se23/se23.h"
+#include "se23_math.h"
+
+enum { S = SE23_GAUSS_NMAX };
+
+static void load3(const se23_real_t *x, se23_vec3_t *a)
+{
+    a->v[0] = x[0];
+    a->v[1] = x[1];
+    a->v[2] = x[2];
+}
+
+static void store3(const se23_vec3_t *a, se23_real_t *x)
+{
+    x[0] = a->v[0];
+    x[1] = a->v[1];
+    x[2] = a->v[2];
+}
+
+static se23_status_t dt_check(se23_real_t dt)
+{
+    if (!(dt > SE23_R(0) && dt <= SE23_R(SE23_CFG_DT_MAX))) {
+        return SE23_ERR_DT;
+    }
+    return SE23_OK;
+}
+
+static se23_status_t noise_check(const se23_imu_noise_t *nz)
+{
+    const se23_real_t q[4] = {nz->gyro_noise, nz->accel_noise, nz->gyro_walk,
+                              nz->accel_walk};
+    if (!se23_all_finite(q, 4)) {
+        return SE23_ERR_NONFINITE;
+    }
+    for (int i = 0; i < 4; ++i) {
+        if (q[i] < SE23_R(0)) {
+            return SE23_ERR_DOMAIN;
+        }
+    }
+    return SE23_OK;
+}
+
+void se23_gauss_fk_apply(const se23_pose_t *U, se23_real_t dt,
+                         const se23_tangent_t *x, se23_tangent_t *y)
+{
+    se23_vec3_t xp, xn, xr, c, t, out[3];
+    load3(&x->v[SE23_IDX_PHI], &xp);
+    load3(&x->v[SE23_IDX_NU], &xn);
+    load3(&x->v[SE23_IDX_RHO], &xr);
+    se23_m3_tmul_v3(&U->R, &xp, &out[0]);
+    se23_v3_cross(&U->v, &xp, &c);        /* nu - v^ phi */
+    se23_v3_axpy(&xn, SE23_R(-1), &c, &t);
+    se23_m3_tmul_v3(&U->R, &t, &out[1]);
+    se23_v3_cross(&U->p, &xp, &c);        /* rho + dt nu - p^ phi */
+    se23_v3_axpy(&xr, dt, &xn, &t);
+    se23_v3_axpy(&t, SE23_R(-1), &c, &t);
+    se23_m3_tmul_v3(&U->R, &t, &out[2]);
+    store3(&out[0], &y->v[SE23_IDX_PHI]);
+    store3(&out[1], &y->v[SE23_IDX_NU]);
+    store3(&out[2], &y->v[SE23_IDX_RHO]);
+}
+
+void se23_gauss_fk(const se23_pose_t *U, se23_real_t dt, se23_mat9_t *F)
+{
+    se23_mat9_t out;
+    for (int j = 0; j < 9; ++j) {
+        se23_tangent_t e = {{SE23_R(0)}}, col;
+        e.v[j] = SE23_R(1);
+        se23_gauss_fk_apply(U, dt, &e, &col);
+        for (int i = 0; i < 9; ++i) {
+            out.m[9 * i + j] = col.v[i];
+        }
+    }
+    *F = out;
+}
+
+void se23_gauss_fk_mul(const se23_pose_t *U, se23_real_t dt,
+                       const se23_mat9x6_t *X, se23_mat9x6_t *Y)
+{
+    se23_mat9x6_t out;
+    for (int j = 0; j < 6; ++j) {
+        se23_tangent_t col, res;
+        for (int i = 0; i < 9; ++i) {
+            col.v[i] = X->m[6 * i + j];
+        }
+        se23_gauss_fk_apply(U, dt, &col, &res);
+        for (int i = 0; i < 9; ++i) {
+            out.m[6 * i + j] = res.v[i];
+        }
+    }
+    *Y = out;
+}
+
+/* Phi = F_k (n = 9) or [[F_k, B_k], [0, I]] (n = 15) as a map of R^n. */
+typedef struct {
+    const se23_pose_t *U;
+    se23_real_t dt;
+    const se23_mat9x6_t *B;
+    int n;
+} phi_ctx_t;
+
+static void phi_map(const void *ctx, const se23_real_t *x, se23_real_t *y)
+{
+    const phi_ctx_t *c = (const phi_ctx_t *)ctx;
+    se23_tangent_t a, b;
+    for (int i = 0; i < 9; ++i) {
+        a.v[i] = x[i];
+    }
+    se23_gauss_fk_apply(c->U, c->dt, &a, &b);
+    for (int i = 0; i < 9; ++i) {
+        se23_real_t s = b.v[i];
+        for (int k = 9; k < c->n; ++k) {
+            s += c->B->m[6 * i + (k - 9)] * x[k];
+        }
+        y[i] = s;
+    }
+    for (int k = 9; k < c->n; ++k) {
+        y[k] = x[k];
+    }
+}
+
+/* Q += B diag(qg I3, qa I3) B^T on the leading 9x9 block (stride). */
+static void add_input_noise(const se23_mat9x6_t *B, se23_real_t qg,
+                            se23_real_t qa, se23_real_t *Q, int stride)
+{
+    for (int i = 0; i < 9; ++i) {
+        for (int j = i; j < 9; ++j) {
+            se23_real_t sg = SE23_R(0), sa = SE23_R(0);
+            for (int k = 0; k < 3; ++k) {
+                sg += B->m[6 * i + k] * B->m[6 * j + k];
+                sa += B->m[6 * i + k + 3] * B->m[6 * j + k + 3];
+            }
+            const se23_real_t q = qg * sg + qa * sa;
+            Q[stride * i + j] += q;
+            if (j != i) {
+                Q[stride * j + i] += q;
+            }
+        }
+    }
+}
+
+se23_status_t se23_gauss_input_noise(const se23_mat9x6_t *B,
+                                     const se23_imu_noise_t *noise,
+                                     se23_real_t dt, se23_mat9_t *Q)
+{
+    SE23_CHECK_NOT_NULL(B);
+    SE23_CHECK_NOT_NULL(noise);
+    SE23_CHECK_NOT_NULL(Q);
+    se23_status_t st = noise_check(noise);
+    if (st == SE23_OK) {
+        st = dt_check(dt);
+    }
+    if (st == SE23_OK && !se23_all_finite(B->m, 54)) {
+        st = SE23_ERR_NONFINITE;
+    }
+    if (st != SE23_OK) {
+        return st;
+    }
+    se23_mat9_t out = {{SE23_R(0)}};
+    add_input_noise(B, noise->gyro_noise * noise->gyro_noise / dt,
+                    noise->accel_noise * noise->accel_noise / dt, out.m, 9);
+    *Q = out;
+    return SE23_OK;
+}
+
+se23_status_t se23_gauss_cov_propagate(const se23_mat9_t *Sg,
+                                       const se23_pose_t *U, se23_real_t dt,
+                                       const se23_mat9_t *Q,
+                                       se23_mat9_t *S_next)
+{
+    SE23_CHECK_NOT_NULL(Sg);
+    SE23_CHECK_NOT_NULL(U);
+    SE23_CHECK_NOT_NULL(Q);
+    SE23_CHECK_NOT_NULL(S_next);
+    se23_status_t st = dt_check(dt);
+    if (st == SE23_OK) {
+        st = se23_pose_check(U);
+    }
+    if (st == SE23_OK) {
+        st = se23_cov_check(Sg->m, 9, 9);
+    }
+    if (st == SE23_OK) {
+        st = se23_cov_check(Q->m, 9, 9);
+    }
+    if (st != SE23_OK) {
+        return st;
+    }
+    se23_real_t P[S * S];
+    for (int i = 0; i < 9; ++i) {
+        for (int j = 0; j < 9; ++j) {
+            P[S * i + j] = Sg->m[9 * i + j];
+        }
+    }
+    const phi_ctx_t ctx = {U, dt, NULL, 9};
+    se23_cov_congruence(phi_map, &ctx, 9, P, P);
+    for (int i = 0; i < 9; ++i) {
+        for (int j = 0; j < 9; ++j) {
+            /* Q is symmetric within tolerance; use its upper triangle. */
+            const se23_real_t q = (j >= i) ? Q->m[9 * i + j] : Q->m[9 * j + i];
+            S_next->m[9 * i + j] = P[S * i + j] + q;
+        }
+    }
+    return SE23_OK;
+}
+
+se23_status_t se23_gauss_check(const se23_gauss_t *g)
+{
+    SE23_CHECK_NOT_NULL(g);
+    if (g->n != SE23_GAUSS_N_POSE && g->n != SE23_GAUSS_N_BIAS) {
+        return SE23_ERR_DIM;
+    }
+    se23_status_t st = se23_pose_check(&g->T);
+    if (st != SE23_OK) {
+        return st;
+    }
+    if (!se23_all_finite(g->b_g.v, 3) || !se23_all_finite(g->b_a.v, 3)) {
+        return SE23_ERR_NONFINITE;
+    }
+    return se23_cov_check(g->P.m, g->n, S);
+}
+
+/* The covariance step of a checked state with checked inputs; cannot fail.
+ * out may alias g. */
+static void propagate_cov(const se23_gauss_t *g, const se23_pose_t *U,
+                          const se23_mat9x6_t *B, const se23_imu_noise_t *nz,
+                          se23_real_t dt, se23_gauss_t *out)
+{
+    const int n = g->n;
+    const phi_ctx_t ctx = {U, dt, B, n};
+    se23_cov_congruence(phi_map, &ctx, n, g->P.m, out->P.m);
+    add_input_noise(B, nz->gyro_noise * nz->gyro_noise / dt,
+                    nz->accel_noise * nz->accel_noise / dt, out->P.m, S);
+    if (n == SE23_GAUSS_N_BIAS) {
+        const se23_real_t wg = nz->gyro_walk * nz->gyro_walk * dt;
+        const se23_real_t wa = nz->accel_walk * nz->accel_walk * dt;
+        for (int k = 0; k < 3; ++k) {
+            out->P.m[S * (SE23_IDX_BG + k) + SE23_IDX_BG + k] += wg;
+            out->P.m[S * (SE23_IDX_BA + k) + SE23_IDX_BA + k] += wa;
+        }
+    }
+    out->T = g->T;
+    out->b_g = g->b_g;
+    out->b_a = g->b_a;
+    out->n = n;
+}
+
+se23_status_t se23_gauss_propagate(const se23_gauss_t *g, const se23_pose_t *U,
+                                   const se23_mat9x6_t *B,
+                                   const se23_imu_noise_t *noise,
+                                   se23_real_t dt, se23_gauss_t *out)
+{
+    SE23_CHECK_NOT_NULL(g);
+    SE23_CHECK_NOT_NULL(U);
+    SE23_CHECK_NOT_NULL(B);
+    SE23_CHECK_NOT_NULL(noise);
+    SE23_CHECK_NOT_NULL(out);
+    se23_status_t st = se23_gauss_check(g);
+    if (st == SE23_OK) {
+        st = dt_check(dt);
+    }
+    if (st == SE23_OK) {
+        st = se23_pose_check(U);
+    }
+    if (st == SE23_OK && !se23_all_finite(B->m, 54)) {
+        st = SE23_ERR_NONFINITE;
+    }
+    if (st == SE23_OK) {
+        st = noise_check(noise);
+    }
+    if (st != SE23_OK) {
+        return st;
+    }
+    propagate_cov(g, U, B, noise, dt, out);
+    return SE23_OK;
+}
+
+se23_status_t se23_gauss_predict(const se23_earth_model_t *model,
+                                 const se23_gauss_t *g,
+                                 const se23_imu_sample_t *s,
+                                 const se23_imu_noise_t *noise,
+                                 se23_input_jac_kind_t kind,
+                                 se23_gauss_t *out)
+{
+    SE23_CHECK_NOT_NULL(model);
+    SE23_CHECK_NOT_NULL(g);
+    SE23_CHECK_NOT_NULL(s);
+    SE23_CHECK_NOT_NULL(noise);
+    SE23_CHECK_NOT_NULL(out);
+    se23_status_t st = se23_gauss_check(g);
+    if (st == SE23_OK) {
+        st = noise_check(noise);
+    }
+    if (st != SE23_OK) {
+        return st;
+    }
+    se23_imu_sample_t c = *s; /* corrected inputs */
+    se23_v3_axpy(&s->w_ib_b, SE23_R(1), &g->b_g, &c.w_ib_b);
+    se23_v3_axpy(&s->f_b, SE23_R(1), &g->b_a, &c.f_b);
+    se23_pose_t U, T_next;
+    se23_mat9x6_t B;
+    st = se23_imu_step(model, &g->T, &c, &T_next);
+    if (st == SE23_OK) {
+        st = se23_imu_increment(&c, &U);
+    }
+    if (st == SE23_OK) {
+        st = se23_gauss_input_jac(kind, &c.w_ib_b, &c.f_b, c.dt, &B);
+    }
+    if (st != SE23_OK) {
+        return st;
+    }
+    propagate_cov(g, &U, &B, noise, c.dt, out);
+    out->T = T_next;
+    return SE23_OK;
+}
+
+/* M = I + sign [[0,0,0],[0,0,w^],[0,0,0]] on (xi, db), w = Rbar^T Omega. */
+typedef struct {
+    se23_vec3_t w;
+    se23_real_t sign;
+    int n;
+} m_ctx_t;
+
+static void m_map(const void *ctx, const se23_real_t *x, se23_real_t *y)
+{
+    const m_ctx_t *c = (const m_ctx_t *)ctx;
+    se23_vec3_t rho, wr, nu;
+    for (int i = 0; i < c->n; ++i) {
+        y[i] = x[i];
+    }
+    load3(&x[SE23_IDX_RHO], &rho);
+    load3(&x[SE23_IDX_NU], &nu);
+    se23_v3_cross(&c->w, &rho, &wr);
+    se23_v3_axpy(&nu, c->sign, &wr, &nu);
+    store3(&nu, &y[SE23_IDX_NU]);
+}
+
+static se23_status_t convert(const se23_earth_model_t *model,
+                             const se23_gauss_t *g, se23_real_t sign,
+                             se23_gauss_t *out)
+{
+    SE23_CHECK_NOT_NULL(model);
+    SE23_CHECK_NOT_NULL(g);
+    SE23_CHECK_NOT_NULL(out);
+    se23_status_t st = se23_gauss_check(g);
+    if (st == SE23_OK && !se23_all_finite(model->w_ie_n.v, 3)) {
+        st = SE23_ERR_NONFINITE;
+    }
+    if (st != SE23_OK) {
+        return st;
+    }
+    m_ctx_t ctx;
+    ctx.sign = sign;
+    ctx.n = g->n;
+    se23_m3_tmul_v3(&g->T.R, &model->w_ie_n, &ctx.w);
+    se23_pose_t T;
+    if (sign < SE23_R(0)) {
+        se23_imu_user_from_carried(model, &g->T, &T);
+    } else {
+        se23_imu_carried_from_user(model, &g->T, &T);
+    }
+    se23_cov_congruence(m_map, &ctx, g->n, g->P.m, out->P.m);
+    out->T = T;
+    out->b_g = g->b_g;
+    out->b_a = g->b_a;
+    out->n = ctx.n;
+    return SE23_OK;
+}
+
+se23_status_t se23_gauss_from_carried(const se23_earth_model_t *model,
+                                      const se23_gauss_t *g,
+                                      se23_gauss_t *out)
+{
+    return convert(model, g, SE23_R(-1), out);
+}
+
+se23_status_t se23_gauss_to_carried(const se23_earth_model_t *model,
+                                    const se23_gauss_t *g,
+                                    se23_gauss_t *out)
+{
+    return convert(model, g, SE23_R(1), out);
+}

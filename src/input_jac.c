@@ -1,0 +1,200 @@
+/* The input matrix B_k of one IMU sample (bias Jacobian of the exact
+ * increment); see gauss.h, se23_gauss_input_jac.
+ *
+ * Derivation. Upsilon(w, f) = (R, dt J(th) f, dt^2 H(th) f), th = w dt.
+ * To first order log(Upsilon^-1 Upsilon') = (log(R^T R'), R^T dv, R^T dp).
+ *  - exp(th + d) = exp(th) exp(Jr(th) d), so the rotation block is dt Jr(th).
+ *  - dv = dt J(th) da + dt^2 D_J(th, f) dg, and R^T J(th) = Jr(th).
+ *  - dp = dt^2 H(th) da + dt^3 D_H(th, f) dg.
+ * With S(th) = a0 I + a1(t) W + a2(t) W^2 (W = th^, t = |th|),
+ * d(W f)/d(th) = -f^, d(W^2 f)/d(th) = (th.f) I + th f^T - 2 f th^T and
+ * d(a(t))/d(th) = (a'(t)/t) th^T, which gives D_S in gauss.h. For J,
+ * (a1, a2) = (c2, c3); for H, (c3, c4) (so3_series.h). The derivative
+ * coefficients dm = cm'(t)/t are, with cm = sum_k (-1)^k t^2k / (2k+m)!,
+ *   d2 = (t sin t + 2 cos t - 2)/t^4,
+ *   d3 = (3 sin t - 2 t - t cos t)/t^5,
+ *   d4 = (4 - 4 cos t - t^2 - t sin t)/t^6,
+ *   dm = sum_{k>=1} (-1)^k 2k t^(2k-2) / (2k+m)!.
+ *
+ * Thresholds. The closed forms lose about eps * 1500 / t^6 (relative, d4,
+ * the worst); the Taylor series with DERIV_TERMS terms truncates below
+ * 1e-17 (relative) for t^2 <= 2.25 and below 1e-12 for t^2 <= 9. Double:
+ * Taylor below t = 1.5 (closed form then within 3e-14). Float: Taylor
+ * below t = 3 (closed form then within 3e-7).
+ */
+#include "se23/gauss.h"
+
+#include "argcheck.h"
+#include "linalg.h"
+#include "se23_math.h"
+#include "so3_series.h"
+
+#define DERIV_TERMS 10
+
+#if SE23_CFG_DOUBLE
+#define DERIV_TAYLOR_MAX SE23_R(1.5)
+#else
+#define DERIV_TAYLOR_MAX SE23_R(3.0)
+#endif
+
+/* (-1)^k 2k / (2k+m)!, k = 1..DERIV_TERMS, for m = 2, 3, 4. */
+static const se23_real_t d2_taylor[DERIV_TERMS] = {
+    SE23_R(-1.0 / 12.0),
+    SE23_R(1.0 / 180.0),
+    SE23_R(-1.0 / 6720.0),
+    SE23_R(1.0 / 453600.0),
+    SE23_R(-1.0 / 47900160.0),
+    SE23_R(1.0 / 7264857600.0),
+    SE23_R(-1.0 / 1494484992000.0),
+    SE23_R(1.0 / 400148356608000.0),
+    SE23_R(-1.0 / 135161222676480000.0),
+    SE23_R(1.0 / 56200036388880384000.0),
+};
+static const se23_real_t d3_taylor[DERIV_TERMS] = {
+    SE23_R(-1.0 / 60.0),
+    SE23_R(1.0 / 1260.0),
+    SE23_R(-1.0 / 60480.0),
+    SE23_R(1.0 / 4989600.0),
+    SE23_R(-1.0 / 622702080.0),
+    SE23_R(1.0 / 108972864000.0),
+    SE23_R(-1.0 / 25406244864000.0),
+    SE23_R(1.0 / 7602818775552000.0),
+    SE23_R(-1.0 / 2838385676206080000.0),
+    SE23_R(1.0 / 1292600836944248832000.0),
+};
+static const se23_real_t d4_taylor[DERIV_TERMS] = {
+    SE23_R(-1.0 / 360.0),
+    SE23_R(1.0 / 10080.0),
+    SE23_R(-1.0 / 604800.0),
+    SE23_R(1.0 / 59875200.0),
+    SE23_R(-1.0 / 8717829120.0),
+    SE23_R(1.0 / 1743565824000.0),
+    SE23_R(-1.0 / 457312407552000.0),
+    SE23_R(1.0 / 152056375511040000.0),
+    SE23_R(-1.0 / 62444484876533760000.0),
+    SE23_R(1.0 / 31022420086661971968000.0),
+};
+
+static se23_real_t horner(const se23_real_t *c, se23_real_t t2)
+{
+    se23_real_t s = c[DERIV_TERMS - 1];
+    for (int k = DERIV_TERMS - 2; k >= 0; --k) {
+        s = s * t2 + c[k];
+    }
+    return s;
+}
+
+typedef struct {
+    se23_real_t d2, d3, d4;
+} deriv_coeffs_t;
+
+static void deriv_coeffs(se23_real_t t, deriv_coeffs_t *d)
+{
+    const se23_real_t t2 = t * t;
+    if (t < DERIV_TAYLOR_MAX) {
+        d->d2 = horner(d2_taylor, t2);
+        d->d3 = horner(d3_taylor, t2);
+        d->d4 = horner(d4_taylor, t2);
+        return;
+    }
+    const se23_real_t s = se23_sin(t), c = se23_cos(t);
+    const se23_real_t t4 = t2 * t2;
+    d->d2 = (t * s + SE23_R(2) * c - SE23_R(2)) / t4;
+    d->d3 = (SE23_R(3) * s - SE23_R(2) * t - t * c) / (t4 * t);
+    d->d4 = (SE23_R(4) - SE23_R(4) * c - t2 - t * s) / (t4 * t2);
+}
+
+/* D = d(S(th) f)/d(th) for S = a0 I + a1 W + a2 W^2 with a1' / t = b1,
+ * a2' / t = b2 (file comment). */
+static void series_deriv(se23_real_t a1, se23_real_t a2, se23_real_t b1,
+                         se23_real_t b2, const se23_vec3_t *th,
+                         const se23_vec3_t *f, se23_mat3_t *D)
+{
+    se23_vec3_t wf, wwf, u;
+    se23_v3_cross(th, f, &wf);
+    se23_v3_cross(th, &wf, &wwf);
+    se23_v3_scale(&wf, b1, &u);
+    se23_v3_axpy(&u, b2, &wwf, &u); /* u th^T: derivative of the coefficients */
+    se23_m3_skew(f, D);
+    const se23_real_t tf = se23_v3_dot(th, f);
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            se23_real_t x = -a1 * D->m[i][j] + u.v[i] * th->v[j] +
+                            a2 * (th->v[i] * f->v[j] -
+                                  SE23_R(2) * f->v[i] * th->v[j]);
+            if (i == j) {
+                x += a2 * tf;
+            }
+            D->m[i][j] = x;
+        }
+    }
+}
+
+/* Writes s A into rows 3 r.., columns 3 c.. of B. */
+static void put_block(se23_mat9x6_t *B, int r, int c, se23_real_t s,
+                      const se23_mat3_t *A)
+{
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            B->m[6 * (3 * r + i) + 3 * c + j] = s * A->m[i][j];
+        }
+    }
+}
+
+static void exact_jac(const se23_vec3_t *w, const se23_vec3_t *f,
+                      se23_real_t dt, se23_mat9x6_t *B)
+{
+    se23_vec3_t th;
+    se23_v3_scale(w, dt, &th);
+    const se23_real_t t = se23_sqrt(se23_v3_dot(&th, &th));
+    se23_so3_coeffs_t c;
+    deriv_coeffs_t d;
+    se23_so3_coeffs(t, &c);
+    deriv_coeffs(t, &d);
+    se23_mat3_t R, Jr, H, DJ, DH, A;
+    se23_m3_series(SE23_R(1), c.c1, c.c2, &th, &R);
+    se23_m3_series(SE23_R(1), -c.c2, c.c3, &th, &Jr); /* Jr(th) = J(-th) */
+    se23_m3_series(SE23_R(0.5), c.c3, c.c4, &th, &H);
+    series_deriv(c.c2, c.c3, d.d2, d.d3, &th, f, &DJ);
+    series_deriv(c.c3, c.c4, d.d3, d.d4, &th, f, &DH);
+    const se23_real_t dt2 = dt * dt;
+    put_block(B, 0, 0, dt, &Jr);
+    put_block(B, 1, 1, dt, &Jr);
+    se23_m3_mul_tn(&R, &DJ, &A);
+    put_block(B, 1, 0, dt2, &A);
+    se23_m3_mul_tn(&R, &DH, &A);
+    put_block(B, 2, 0, dt2 * dt, &A);
+    se23_m3_mul_tn(&R, &H, &A);
+    put_block(B, 2, 1, dt2, &A); /* block (0, 1) stays zero */
+}
+
+se23_status_t se23_gauss_input_jac(se23_input_jac_kind_t kind,
+                                   const se23_vec3_t *w_b,
+                                   const se23_vec3_t *f_b, se23_real_t dt,
+                                   se23_mat9x6_t *B)
+{
+    SE23_CHECK_NOT_NULL(w_b);
+    SE23_CHECK_NOT_NULL(f_b);
+    SE23_CHECK_NOT_NULL(B);
+    if (!se23_all_finite(w_b->v, 3) || !se23_all_finite(f_b->v, 3)) {
+        return SE23_ERR_NONFINITE;
+    }
+    if (!(dt > SE23_R(0) && dt <= SE23_R(SE23_CFG_DT_MAX))) {
+        return SE23_ERR_DT;
+    }
+    se23_mat9x6_t out = {{SE23_R(0)}};
+    switch (kind) {
+    case SE23_INPUT_JAC_EXACT:
+        exact_jac(w_b, f_b, dt, &out);
+        break;
+    case SE23_INPUT_JAC_BASIC:
+        for (int i = 0; i < 6; ++i) {
+            out.m[6 * i + i] = dt;
+        }
+        break;
+    default:
+        return SE23_ERR_DOMAIN;
+    }
+    *B = out;
+    return SE23_OK;
+}
