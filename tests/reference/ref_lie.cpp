@@ -124,17 +124,22 @@ Mat9L se23_jr_ld(const Vec9L &xi)
 }
 
 // Principal logarithm of M in the group (exp, log, vee, Jr given): Eigen's
-// logm, then two Newton steps x <- x + Jr(x)^-1 vee(logm(exp(x)^-1 M)).
-// logm is accurate near the identity, where the residual lives, so the fixed
-// point is accurate even where logm(M) itself is not (theta near pi).
+// logm, then Newton steps x <- x + Jr(x)^-1 vee(logm(exp(x)^-1 M)) until the
+// step is at rounding level (at least two, at most eight). logm is accurate
+// near the identity, where the residual lives, so the fixed point is accurate
+// even where logm(M) itself is not (theta near pi).
 template <class S, int N, int D, class Exp, class Vee, class Jr>
 VecN<S, D> polished_log(const MatN<S, N> &M, Exp exp_fn, Vee vee_fn, Jr jr_fn)
 {
     VecN<S, D> x = vee_fn(logm_n<S, N>(M));
-    for (int it = 0; it < 2; ++it) {
+    for (int it = 0; it < 8; ++it) {
         const MatN<S, N> Einv = exp_fn(x).inverse();
         const VecN<S, D> r = vee_fn(logm_n<S, N>(MatN<S, N>(Einv * M)));
-        x += jr_fn(x).partialPivLu().solve(r);
+        const VecN<S, D> step = jr_fn(x).partialPivLu().solve(r);
+        x += step;
+        if (it >= 1 && step.norm() <= 8 * Eigen::NumTraits<S>::epsilon() * (1 + x.norm())) {
+            break;
+        }
     }
     return x;
 }

@@ -1,0 +1,22 @@
+# Eigen cross-checks (tests/reference): every crosscheck_* program of both
+# precision trees, one pass/fail each. Their accuracy tables are kept in
+# $LOGDIR/accuracy-<precision>-<program>.md and merged into
+# $LOGDIR/accuracy.md (the README's "Accuracy" section quotes them).
+# Each program runs a second time with every C result perturbed
+# (SE23_XC_PERTURB, relative, above every bound of that precision times the
+# largest condition factor used, ~3e3): that run passes only if EVERY row
+# then fails, i.e. it proves that each comparison can fail.
+for ref_prec in double float; do
+    if [ "$ref_prec" = double ]; then ref_perturb=1e-8; else ref_perturb=1e-2; fi
+    for ref_bin in "$BUILD/cmake-$ref_prec/tests/reference"/crosscheck_*; do
+        [ -x "$ref_bin" ] || continue
+        ref_name=$(basename "$ref_bin")
+        check "ref-$ref_prec-$ref_name" "$ref_bin" "$LOGDIR/accuracy-$ref_prec-$ref_name.md"
+        check "ref-$ref_prec-$ref_name-perturbed" env SE23_XC_PERTURB=$ref_perturb "$ref_bin"
+    done
+done
+{
+    echo "| routine | build | error | samples | worst | worst/eps | bound | over bound |"
+    echo "|---|---|---|---:|---:|---:|---:|---:|"
+    cat "$LOGDIR"/accuracy-double-*.md "$LOGDIR"/accuracy-float-*.md 2>/dev/null
+} >"$LOGDIR/accuracy.md"
