@@ -17,7 +17,7 @@ TGT_CFLAGS := $(WARN) -O2 -g -ffunction-sections -fdata-sections \
 TGT_LDFLAGS := -nostartfiles --specs=nano.specs --specs=rdimon.specs \
                -Lport/cortex-m -Wl,--gc-sections
 TGT_PORT_OBJS = $(TGT)/$(1)/port/startup.o $(TGT)/$(1)/port/se23_port.o
-TGT_TV_OBJS = $(TGT)/$(1)/tv_runner.o $(TGT)/$(1)/tv_custom.o
+TGT_TV_OBJS = $(TGT)/$(1)/tv_runner.o $(TGT)/$(1)/tv_adapters.o $(TGT)/$(1)/tv_custom.o
 
 # Reference vectors: tools/target/gen_vectors (host, C++) from the Eigen
 # reference library that the CMake test tree builds (tests/reference).
@@ -146,3 +146,29 @@ gates-target: cross target
 	    $(TGT)/$(v)/tv_test.elf $(TGT_BUDGETS)/stack.txt $(v) &&) true
 	$(foreach v,$(TGT_VARIANTS),$(PY3) tools/target/size_gate.py $(BUILD)/lib-$(v)/libse23.a \
 	    $(TGT_BUDGETS)/size.txt $(v) &&) true
+
+# Instruction counts (make bench-target): the benchmark image of each
+# variant (tools/target/bench_main.c) under QEMU with the counting plugin
+# tools/target/insn_count.c; table printed and kept in $(TGT)/bench.md.
+TGT_PLUGIN := $(TGT)/insn_count.so
+$(TGT_PLUGIN): tools/target/insn_count.c
+	mkdir -p $(@D)
+	$(CC) -std=c11 -Wall -Wextra -Wpedantic -Werror -O2 -shared -fPIC $< -o $@
+define tgt_bench
+$(TGT)/$(1)/bench/%.o: tools/target/%.c $(wildcard tools/target/*.h) tests/target/tv.h $(LIB_HDRS)
+	mkdir -p $$(@D)
+	$(ARM_CC) $(2) $(TGT_CFLAGS) -Itests/target -Itools/target -DSE23_CFG_DOUBLE=$(3) -c $$< -o $$@
+$(TGT)/$(1)/bench.elf: $(patsubst %,$(TGT)/$(1)/bench/%.o,bench_main bench_marks bench_steps) \
+                       $(TGT)/$(1)/tv_adapters.o $(TGT)/$(1)/tv_custom.o $(TGT)/$(1)/tv_data.o \
+                       $(call TGT_PORT_OBJS,$(1)) $(BUILD)/lib-$(1)/libse23.a port/cortex-m/sections.ld
+	$(ARM_CC) $(2) $(TGT_LDFLAGS) -Tport/cortex-m/$(TGT_BOARD_$(1)).ld \
+	    $$(filter %.o %.a,$$^) -lm -o $$@
+endef
+$(eval $(call tgt_bench,m4f-float,$(M4F_FLAGS),0))
+$(eval $(call tgt_bench,m7-double,$(M7_FLAGS),1))
+
+.PHONY: bench-target
+bench-target: $(TGT_PLUGIN) $(foreach v,$(TGT_VARIANTS),$(TGT)/$(v)/bench.elf)
+	$(PY3) tools/target/bench.py $(TGT_PLUGIN) \
+	    $(foreach v,$(TGT_VARIANTS),$(v)=$(TGT_BOARD_$(v))=$(TGT)/$(v)/bench.elf) \
+	    --out $(TGT)/bench.md

@@ -14,3 +14,9 @@ for v in m4f-float:mps2-an386 m7-double:mps2-an500; do
     done
 done
 check target-corrupt-vector-fails make -s test-target-corrupt BUILD="$BUILD"
+# Instruction counts (make bench-target): every operation returns SE23_OK and
+# two runs give identical counts.
+check target-bench-deterministic sh -c 'make -s bench-target BUILD="$1" >/dev/null &&
+    cp "$1/target/bench.md" "$1/target/bench.first.md" &&
+    make -s bench-target BUILD="$1" >/dev/null &&
+    cmp "$1/target/bench.md" "$1/target/bench.first.md" && cat "$1/target/bench.md"' sh "$BUILD"

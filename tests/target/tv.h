@@ -36,29 +36,42 @@ typedef struct {
 } tv_data_t;
 
 /**
- * Calls the routine on one input row and writes its outputs (n_out reals).
- * The output struct is filled with TV_SENTINEL before the call, so that a
- * routine that fails must leave every output real equal to TV_SENTINEL.
- * @return the routine's status (SE23_OK for void routines).
+ * One routine under test: a row of tv_list.h, as three steps over inputs and
+ * outputs held in static storage (so that the benchmark image can time the
+ * call alone):
+ *   load(in)    copies an input row into the input structs and fills the
+ *               output structs with TV_SENTINEL;
+ *   call()      runs the routine; returns its status (SE23_OK if void);
+ *   store(out)  copies the output structs to n_out reals.
+ * A routine that fails must leave every output real equal to TV_SENTINEL.
  */
-typedef int (*tv_call_t)(const se23_real_t *in, se23_real_t *out);
-
-/** One routine under test: a row of tv_list.h. */
 typedef struct {
     const char *name;      /**< the public function's name */
-    tv_call_t call;
+    void (*load)(const se23_real_t *in);
+    int (*call)(void);
+    void (*store)(se23_real_t *out);
     int n_in;              /**< reals per input row */
     int n_out;             /**< reals per output row */
     int tol;               /**< tolerance, in epsilons of the build (see tv_runner.c) */
     const tv_data_t *data; /**< the generated vectors */
 } tv_routine_t;
 
+/** Every row of tv_list.h, in order (tv_adapters.c). */
+extern const tv_routine_t tv_routines[];
+extern const int tv_n_routines;
+
 /** Value written into outputs before each call. */
 #define TV_SENTINEL TV_R(-1234.5)
 
+/** Fills n bytes of reals with TV_SENTINEL. */
+void tv_fill_sentinel(void *p, size_t bytes);
+
 /** Routines whose signature is not one of the generic kinds of tv_list.h
- *  have a hand-written adapter tv_call_<name> in tv_custom.c. */
-#define TV_CUSTOM_DECL(fn) int tv_call_##fn(const se23_real_t *in, se23_real_t *out);
+ *  have hand-written tv_load_<fn>, tv_call_<fn>, tv_store_<fn> in tv_custom.c. */
+#define TV_CUSTOM_DECL(fn)                                                     \
+    void tv_load_##fn(const se23_real_t *in);                                  \
+    int tv_call_##fn(void);                                                    \
+    void tv_store_##fn(se23_real_t *out);
 
 /* The generated data, one per routine of the list. */
 #define TV_DATA_DECL(fn) extern const tv_data_t tv_data_##fn;

@@ -25,89 +25,6 @@
 /** Largest number of output reals of any routine (a 9x9 matrix + margin). */
 #define TV_MAX_OUT 128
 
-static void fill_sentinel(void *p, size_t bytes)
-{
-    se23_real_t *r = (se23_real_t *)p;
-    size_t i;
-    for (i = 0; i < bytes / sizeof(se23_real_t); ++i) {
-        r[i] = TV_SENTINEL;
-    }
-}
-
-/* ---- generic adapters, one per row of tv_list.h ------------------------- */
-
-#define TV_V0(fn, O, tol)                                                      \
-    static int tv_call_##fn(const se23_real_t *in, se23_real_t *out)           \
-    {                                                                          \
-        O o;                                                                   \
-        (void)in;                                                              \
-        fill_sentinel(&o, sizeof o);                                           \
-        fn(&o);                                                                \
-        memcpy(out, &o, sizeof o);                                             \
-        return SE23_OK;                                                        \
-    }
-#define TV_1(fn, A, O, call)                                                   \
-    static int tv_call_##fn(const se23_real_t *in, se23_real_t *out)           \
-    {                                                                          \
-        A a;                                                                   \
-        O o;                                                                   \
-        int st = SE23_OK;                                                      \
-        memcpy(&a, in, sizeof a);                                              \
-        fill_sentinel(&o, sizeof o);                                           \
-        call;                                                                  \
-        memcpy(out, &o, sizeof o);                                             \
-        return st;                                                             \
-    }
-#define TV_2(fn, A, B, O, call)                                                \
-    static int tv_call_##fn(const se23_real_t *in, se23_real_t *out)           \
-    {                                                                          \
-        A a;                                                                   \
-        B b;                                                                   \
-        O o;                                                                   \
-        int st = SE23_OK;                                                      \
-        memcpy(&a, in, sizeof a);                                              \
-        memcpy(&b, in + TV_REALS(A), sizeof b);                                \
-        fill_sentinel(&o, sizeof o);                                           \
-        call;                                                                  \
-        memcpy(out, &o, sizeof o);                                             \
-        return st;                                                             \
-    }
-#define TV_V1(fn, A, O, tol) TV_1(fn, A, O, fn(&a, &o))
-#define TV_S1(fn, A, O, tol) TV_1(fn, A, O, st = (int)fn(&a, &o))
-#define TV_V2(fn, A, B, O, tol) TV_2(fn, A, B, O, fn(&a, &b, &o))
-#define TV_S2(fn, A, B, O, tol) TV_2(fn, A, B, O, st = (int)fn(&a, &b, &o))
-#define TV_C1(fn, A, tol)                                                      \
-    static int tv_call_##fn(const se23_real_t *in, se23_real_t *out)           \
-    {                                                                          \
-        A a;                                                                   \
-        (void)out;                                                             \
-        memcpy(&a, in, sizeof a);                                              \
-        return (int)fn(&a);                                                    \
-    }
-#define TV_CUSTOM(fn, n_in, n_out, tol)
-#include "tv_list.h"
-#undef TV_V0
-#undef TV_V1
-#undef TV_S1
-#undef TV_V2
-#undef TV_S2
-#undef TV_C1
-#undef TV_CUSTOM
-
-/* ---- the table ----------------------------------------------------------- */
-
-#define TV_ROW(fn, n_in, n_out, tol) {#fn, tv_call_##fn, n_in, n_out, tol, &tv_data_##fn},
-#define TV_V0(fn, O, tol) TV_ROW(fn, 0, TV_REALS(O), tol)
-#define TV_V1(fn, A, O, tol) TV_ROW(fn, TV_REALS(A), TV_REALS(O), tol)
-#define TV_S1(fn, A, O, tol) TV_ROW(fn, TV_REALS(A), TV_REALS(O), tol)
-#define TV_V2(fn, A, B, O, tol) TV_ROW(fn, TV_REALS(A) + TV_REALS(B), TV_REALS(O), tol)
-#define TV_S2(fn, A, B, O, tol) TV_ROW(fn, TV_REALS(A) + TV_REALS(B), TV_REALS(O), tol)
-#define TV_C1(fn, A, tol) TV_ROW(fn, TV_REALS(A), 0, tol)
-#define TV_CUSTOM(fn, n_in, n_out, tol) TV_ROW(fn, n_in, n_out, tol)
-static const tv_routine_t routines[] = {
-#include "tv_list.h"
-};
-
 /* ---- the checks ------------------------------------------------------------ */
 
 static se23_real_t abs_r(se23_real_t x) { return x < TV_R(0) ? -x : x; }
@@ -169,7 +86,10 @@ static int run_routine(const tv_routine_t *r)
         const se23_real_t *in = d->in != NULL ? d->in + (size_t)k * (size_t)d->n_in : NULL;
         const se23_real_t *exp = d->out + (size_t)k * (size_t)d->n_out;
         int want = d->status[k];
-        int st = r->call(in, out);
+        int st;
+        r->load(in);
+        st = r->call();
+        r->store(out);
         int ok = (st == want);
         if (ok && st == SE23_OK && r->n_out > 0) {
             int j;
@@ -217,10 +137,10 @@ static int check_status_str(void)
 int main(void)
 {
     int fails = 0;
-    size_t i;
+    int i;
     printf("se23 target vectors, %s build\n", SE23_CFG_DOUBLE ? "double" : "float");
-    for (i = 0; i < sizeof routines / sizeof routines[0]; ++i) {
-        fails += run_routine(&routines[i]);
+    for (i = 0; i < tv_n_routines; ++i) {
+        fails += run_routine(&tv_routines[i]);
     }
     fails += check_status_str();
     printf("%d failure(s)\n", fails);
