@@ -13,6 +13,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "../lcm/harness.h"
 #include "ins.h"
@@ -31,6 +32,7 @@ typedef struct {
     int progress;
     int exit_on_end;
     double idle_timeout; /* live: stop after this long without input [s] */
+    const char *ready_file;
 } node_opts_t;
 
 typedef struct {
@@ -70,6 +72,7 @@ static void usage(FILE *f)
             "  --preint S            publish preintegrated factors of S seconds (0 = off)\n"
             "  --exit-on-end         stop when SE23_SIM_END arrives (live runs)\n"
             "  --idle-timeout S      live runs: stop after S s without input (0 = never)\n"
+            "  --ready-file PATH     create PATH once subscribed (scripts wait for it)\n"
             "  --progress            progress line on stderr\n");
 }
 
@@ -84,6 +87,7 @@ static int parse_args(int argc, char **argv, node_opts_t *o, ins_config_t *c)
     o->progress = 0;
     o->exit_on_end = 0;
     o->idle_timeout = 0.0;
+    o->ready_file = NULL;
     memset(c, 0, sizeof *c);
     c->earth_rotation = 1;
     c->bias_states = 1;
@@ -140,6 +144,8 @@ static int parse_args(int argc, char **argv, node_opts_t *o, ins_config_t *c)
             bad = harness_parse_double(v, &c->max_outage) || c->max_outage < 0.0;
         } else if (strcmp(a, "--preint") == 0) {
             bad = harness_parse_double(v, &c->preint_window) || c->preint_window < 0.0;
+        } else if (strcmp(a, "--ready-file") == 0) {
+            o->ready_file = v;
         } else if (strcmp(a, "--idle-timeout") == 0) {
             bad = harness_parse_double(v, &o->idle_timeout) || o->idle_timeout < 0.0;
         } else {
@@ -332,7 +338,14 @@ static void on_end(const lcm_recv_buf_t *rb, const char *ch, void *user)
     nd->ended = 1;
 }
 
-static void summary(const node_t *nd)
+static double cpu_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static void summary(const node_t *nd, double cpu_s)
 {
     const ins_counters_t *c = &nd->ins.c;
     printf("se23-ins: input accounting\n");
@@ -351,6 +364,8 @@ static void summary(const node_t *nd)
     printf("  time_resets       %lld\n", (long long)c->time_resets);
     printf("  filter_errors     %lld\n", (long long)c->filter_errors);
     printf("  status            0x%02x\n", (unsigned)nd->ins.status);
+    printf("  cpu_seconds       %.3f\n", cpu_s);
+    printf("  samples_per_s     %.0f\n", cpu_s > 0.0 ? (double)c->imu_used / cpu_s : 0.0);
 }
 
 int main(int argc, char **argv)
@@ -360,6 +375,7 @@ int main(int argc, char **argv)
     lcm_t *in;
     int is_file, same;
     int64_t last_input;
+    double cpu0;
 
     if (parse_args(argc, argv, &nd.o, &cfg) != 0) {
         usage(stderr);
@@ -391,8 +407,15 @@ int main(int argc, char **argv)
     lcm_subscription_set_queue_capacity(lcm_subscribe(in, HARNESS_CH_GNSS, on_gnss, &nd), 1000);
     lcm_subscribe(in, HARNESS_CH_INIT, on_init, &nd);
     lcm_subscribe(in, HARNESS_CH_SIM_END, on_end, &nd);
+    if (nd.o.ready_file != NULL) {
+        FILE *rf = fopen(nd.o.ready_file, "w");
+        if (rf != NULL) {
+            fclose(rf);
+        }
+    }
 
     is_file = strncmp(nd.o.in_url, "file://", 7) == 0;
+    cpu0 = cpu_seconds();
     last_input = harness_now_ns();
     while (!stop_flag && !(nd.o.exit_on_end && nd.ended)) {
         if (is_file) {
@@ -414,7 +437,7 @@ int main(int argc, char **argv)
     }
     publish_nav(&nd); /* the final state */
     progress(&nd, 1);
-    summary(&nd);
+    summary(&nd, cpu_seconds() - cpu0);
     if (!same) {
         lcm_destroy(nd.out);
     }

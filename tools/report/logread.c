@@ -2,6 +2,7 @@
 #include "logread.h"
 
 #include <lcm/eventlog.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -63,6 +64,18 @@ static void decode_event(const lcm_eventlog_event_t *ev, log_data_t *d)
         }
     } else if (strcmp(ch, HARNESS_CH_IMU) == 0) {
         d->n_imu++;
+    } else if (strcmp(ch, HARNESS_CH_PREINT) == 0) {
+        se23lcm_preint_factor m;
+        bad = se23lcm_preint_factor_decode(ev->data, 0, len, &m) < 0;
+        if (!bad) {
+            int i, ok = fabs((double)(m.t1_ns - m.t0_ns) * 1e-9 - m.dt_s) < 1e-6 && m.dt_s > 0.0;
+            for (i = 0; i < 9; i++) {
+                ok = ok && m.cov[10 * i] >= 0.0 && isfinite(m.cov[10 * i]);
+            }
+            d->n_preint++;
+            d->n_preint_bad += !ok;
+            d->preint_samples += m.n_samples;
+        }
     }
     if (bad) {
         d->n_decode_errors++;

@@ -12,6 +12,7 @@
 
 #include "se23lcm_gnss_fix.h"
 #include "se23lcm_nav_state.h"
+#include "se23lcm_preint_factor.h"
 #include "se23lcm_sim_info.h"
 #include "se23lcm_truth.h"
 
@@ -25,6 +26,9 @@ typedef struct {
     se23lcm_sim_info info;
     int have_info;
     int64_t n_imu;          /**< SE23_IMU events seen */
+    int64_t n_preint;       /**< SE23_PREINT factors decoded */
+    int64_t n_preint_bad;   /**< factors whose dt or covariance diagonal is wrong */
+    int64_t preint_samples; /**< IMU samples covered by the factors */
     int64_t n_events;       /**< all events read */
     int64_t n_decode_errors; /**< events of a known channel that failed to decode */
 } log_data_t;
