@@ -100,18 +100,17 @@ void se23_cov_congruence(se23_cov_map_fn map, const void *ctx, int n,
             W[S * i + j] = y[i];
         }
     }
-    /* Column i of A W^T = A (row i of W); keep rows 0..i (upper triangle). */
-    se23_real_t Z[S * S];
+    /* P is no longer read: column i of A W^T = A (row i of W) goes straight
+     * to out, rows 0..i (upper triangle), then the mirror. */
     for (int i = 0; i < n; ++i) {
         map(ctx, &W[S * i], y);
         for (int r = 0; r <= i; ++r) {
-            Z[S * r + i] = y[r];
+            out[S * r + i] = y[r];
         }
     }
     for (int i = 0; i < n; ++i) {
-        for (int j = i; j < n; ++j) {
-            out[S * i + j] = Z[S * i + j];
-            out[S * j + i] = Z[S * i + j];
+        for (int j = i + 1; j < n; ++j) {
+            out[S * j + i] = out[S * i + j];
         }
     }
 }

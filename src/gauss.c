@@ -244,8 +244,9 @@ static void propagate_cov(const se23_gauss_t *g, const se23_pose_t *U,
         const se23_real_t wg = nz->gyro_walk * nz->gyro_walk * dt;
         const se23_real_t wa = nz->accel_walk * nz->accel_walk * dt;
         for (int k = 0; k < 3; ++k) {
-            out->P.m[S * (SE23_IDX_BG + k) + SE23_IDX_BG + k] += wg;
-            out->P.m[S * (SE23_IDX_BA + k) + SE23_IDX_BA + k] += wa;
+            const int ig = (int)SE23_IDX_BG + k, ia = (int)SE23_IDX_BA + k;
+            out->P.m[S * ig + ig] += wg;
+            out->P.m[S * ia + ia] += wa;
         }
     }
     out->T = g->T;

@@ -14,6 +14,9 @@
 
 #include <math.h>
 
+#include <string.h>
+
+#include "se23/gauss.h"
 #include "se23/types.h"
 #include "se23_test.h"
 
@@ -262,6 +265,37 @@ static inline void gt_chi2_mean_interval(int dof, int runs, double *lo, double *
     const double a = 1.0 - 2.0 / (9.0 * k), b = sqrt(2.0 / (9.0 * k));
     *lo = k * pow(a - z * b, 3) / runs;
     *hi = k * pow(a + z * b, 3) / runs;
+}
+
+/* A = G G^T + d I, G an n x k matrix with entries scale N(0, 1) (rank k
+ * when d = 0), stored with row stride `stride`, n, k <= 15. */
+static inline void gt_random_cov(se23t_rng_t *rng, int n, int k, int stride,
+                                 double scale, double d, se23_real_t *A)
+{
+    double G[SE23_GAUSS_NMAX * SE23_GAUSS_NMAX];
+    for (int i = 0; i < n * k; ++i) {
+        G[i] = scale * se23t_normal(rng);
+    }
+    for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j) {
+            double s = (i == j) ? d : 0.0;
+            for (int r = 0; r < k; ++r) {
+                s += G[k * i + r] * G[k * j + r];
+            }
+            A[stride * i + j] = (se23_real_t)s;
+        }
+    }
+}
+
+/* A random valid filter state of dimension n (unused storage zeroed). */
+static inline void gt_random_gauss(se23t_rng_t *rng, int n, se23_gauss_t *g)
+{
+    memset(g, 0, sizeof *g);
+    se23t_random_pose(rng, 10.0, &g->T);
+    se23t_random_vec3(rng, 0.01, &g->b_g);
+    se23t_random_vec3(rng, 0.1, &g->b_a);
+    g->n = n;
+    gt_random_cov(rng, n, n, SE23_GAUSS_NMAX, 0.1, 1e-3, g->P.m);
 }
 
 #endif /* SE23_GAUSS_TEST_H */

@@ -15,24 +15,6 @@
 
 enum { S = SE23_COV_NMAX };
 
-/* A = G G^T + d I with G n x k random (rank k when d = 0), stride S. */
-static void random_psd(se23t_rng_t *rng, int n, int k, double d, se23_real_t *A)
-{
-    double G[S * S];
-    for (int i = 0; i < n * k; ++i) {
-        G[i] = se23t_normal(rng);
-    }
-    for (int i = 0; i < n; ++i) {
-        for (int j = 0; j < n; ++j) {
-            double s = (i == j) ? d : 0.0;
-            for (int r = 0; r < k; ++r) {
-                s += G[k * i + r] * G[k * j + r];
-            }
-            A[S * i + j] = (se23_real_t)s;
-        }
-    }
-}
-
 static void test_cov_check_accepts_psd_and_singular(void **state)
 {
     (void)state;
@@ -41,9 +23,9 @@ static void test_cov_check_accepts_psd_and_singular(void **state)
     se23_real_t A[S * S] = {0};
     assert_int_equal(se23_cov_check(A, 15, S), SE23_OK); /* zero matrix */
     for (int n = 1; n <= 15; ++n) {
-        random_psd(&rng, n, n, 0.1, A);
+        gt_random_cov(&rng, n, n, S, 1.0, 0.1, A);
         assert_int_equal(se23_cov_check(A, n, S), SE23_OK);
-        random_psd(&rng, n, (n + 1) / 2, 0.0, A); /* rank deficient */
+        gt_random_cov(&rng, n, (n + 1) / 2, S, 1.0, 0.0, A); /* rank deficient */
         assert_int_equal(se23_cov_check(A, n, S), SE23_OK);
     }
     /* Mixed scales: a 1e6 m^2 position next to a 1e-12 rad^2 attitude. */
@@ -113,7 +95,7 @@ static void test_cov_chol_factors_and_solves(void **state)
     se23t_rng_seed(&rng, 502);
     for (int n = 1; n <= 15; ++n) {
         se23_real_t A[S * S], L[S * S], x[S], b[S];
-        random_psd(&rng, n, n, 0.5, A);
+        gt_random_cov(&rng, n, n, S, 1.0, 0.5, A);
         assert_true(se23_cov_chol(A, n, S, SE23_R(0), L));
         for (int i = 0; i < n; ++i) {
             for (int j = 0; j < n; ++j) {
@@ -183,7 +165,7 @@ static void test_cov_congruence_matches_dense_and_is_symmetric(void **state)
         for (int i = 0; i < S * S; ++i) {
             A[i] = (se23_real_t)se23t_normal(&rng);
         }
-        random_psd(&rng, n, n, 0.1, P);
+        gt_random_cov(&rng, n, n, S, 1.0, 0.1, P);
         const dense_ctx_t ctx = {A, n};
         se23_cov_congruence(dense_map, &ctx, n, P, out);
         for (int i = 0; i < n; ++i) {

@@ -41,35 +41,6 @@ static void increment(const se23_imu_sample_t *s, se23_pose_t *U)
     assert_int_equal(se23_imu_increment(s, U), SE23_OK);
 }
 
-/* A = G G^T + d I, G n x n with entries scale N(0, 1), stride `stride`. */
-static void random_cov(se23t_rng_t *rng, int n, int stride, double scale,
-                       double d, se23_real_t *A)
-{
-    double G[S * S];
-    for (int i = 0; i < n * n; ++i) {
-        G[i] = scale * se23t_normal(rng);
-    }
-    for (int i = 0; i < n; ++i) {
-        for (int j = 0; j < n; ++j) {
-            double s = (i == j) ? d : 0.0;
-            for (int r = 0; r < n; ++r) {
-                s += G[n * i + r] * G[n * j + r];
-            }
-            A[stride * i + j] = (se23_real_t)s;
-        }
-    }
-}
-
-static void random_gauss(se23t_rng_t *rng, int n, se23_gauss_t *g)
-{
-    memset(g, 0, sizeof *g);
-    se23t_random_pose(rng, 10.0, &g->T);
-    se23t_random_vec3(rng, 0.01, &g->b_g);
-    se23t_random_vec3(rng, 0.1, &g->b_a);
-    g->n = n;
-    random_cov(rng, n, S, 0.1, 1e-4, g->P.m);
-}
-
 /* C = A B^T (double), A, B n x k with strides sa, sb; C n x n stride S. */
 static void mul_nt(const double *A, const double *B, int n, int k, int sa,
                    int sb, double *C)
@@ -361,8 +332,8 @@ static void test_gauss_cov_propagate_matches_dense_and_is_symmetric(void **state
         se23_pose_t U;
         increment(&s, &U);
         se23_mat9_t Sg, Q, Sn;
-        random_cov(&rng, 9, 9, 0.3, 0.0, Sg.m);
-        random_cov(&rng, 9, 9, 0.01, 0.0, Q.m);
+        gt_random_cov(&rng, 9, 9, 9, 0.3, 0.0, Sg.m);
+        gt_random_cov(&rng, 9, 9, 9, 0.01, 0.0, Q.m);
         assert_int_equal(se23_gauss_cov_propagate(&Sg, &U, s.dt, &Q, &Sn), SE23_OK);
         double Phi[S * S], ref[S * S];
         dense_phi(&U, (double)s.dt, NULL, 9, Phi);
@@ -388,8 +359,8 @@ static void test_gauss_cov_propagate_rejects_bad_input_untouched(void **state)
     se23_pose_t U, badU;
     increment(&s, &U);
     se23_mat9_t Sg, Q, out, out0, bad;
-    random_cov(&rng, 9, 9, 0.3, 0.0, Sg.m);
-    random_cov(&rng, 9, 9, 0.01, 0.0, Q.m);
+    gt_random_cov(&rng, 9, 9, 9, 0.3, 0.0, Sg.m);
+    gt_random_cov(&rng, 9, 9, 9, 0.01, 0.0, Q.m);
     memset(&out, SENTINEL, sizeof out);
     out0 = out;
     bad = Sg;
@@ -431,7 +402,7 @@ static void test_gauss_propagate_matches_dense_with_and_without_biases(void **st
         se23_mat9_t Q;
         se23_gauss_t g, out;
         increment(&s, &U);
-        random_gauss(&rng, n, &g);
+        gt_random_gauss(&rng, n, &g);
         memset(&out, 0, sizeof out);
         assert_int_equal(se23_gauss_input_jac(SE23_INPUT_JAC_EXACT, &s.w_ib_b, &s.f_b, s.dt, &B), SE23_OK);
         assert_int_equal(se23_gauss_input_noise(&B, &NOISE, s.dt, &Q), SE23_OK);
@@ -479,7 +450,7 @@ static void test_gauss_check_reports_each_defect(void **state)
     se23t_rng_t rng;
     se23t_rng_seed(&rng, 609);
     se23_gauss_t g, bad;
-    random_gauss(&rng, 15, &g);
+    gt_random_gauss(&rng, 15, &g);
     assert_int_equal(se23_gauss_check(&g), SE23_OK);
     bad = g;
     bad.n = 12;
@@ -515,7 +486,7 @@ static void test_gauss_propagate_rejects_bad_input_untouched(void **state)
     se23_gauss_t g, bad, out, out0;
     increment(&s, &U);
     assert_int_equal(se23_gauss_input_jac(SE23_INPUT_JAC_EXACT, &s.w_ib_b, &s.f_b, s.dt, &B), SE23_OK);
-    random_gauss(&rng, 15, &g);
+    gt_random_gauss(&rng, 15, &g);
     memset(&out, SENTINEL, sizeof out);
     out0 = out;
     bad = g;
@@ -555,7 +526,7 @@ static void test_gauss_predict_matches_step_and_propagate(void **state)
         const int n = (rep % 2) ? 15 : 9;
         const se23_imu_sample_t s = random_sample(&rng, 0.01);
         se23_gauss_t g, out, ref;
-        random_gauss(&rng, n, &g);
+        gt_random_gauss(&rng, n, &g);
         assert_int_equal(se23_gauss_predict(&model, &g, &s, &NOISE, SE23_INPUT_JAC_EXACT, &out), SE23_OK);
         /* Corrected inputs w + b_g, f + b_a. */
         se23_imu_sample_t c = s;
@@ -587,7 +558,7 @@ static void test_gauss_predict_rejects_bad_input_untouched(void **state)
     assert_int_equal(se23_earth_model_init(&g_n, &zero, SE23_R(0.01), SE23_R(0.02), &model), SE23_OK);
     se23_imu_sample_t s = random_sample(&rng, 0.01);
     se23_gauss_t g, bad, out, out0;
-    random_gauss(&rng, 15, &g);
+    gt_random_gauss(&rng, 15, &g);
     memset(&out, SENTINEL, sizeof out);
     out0 = out;
     bad = g;
@@ -623,7 +594,7 @@ static void test_gauss_from_carried_m_matches_central_differences(void **state)
     const double h = 1e-5;
     for (int rep = 0; rep < 10; ++rep) {
         se23_gauss_t gp, gu, back;
-        random_gauss(&rng, (rep % 2) ? 15 : 9, &gp);
+        gt_random_gauss(&rng, (rep % 2) ? 15 : 9, &gp);
         const int n = gp.n;
         assert_int_equal(se23_gauss_from_carried(&model, &gp, &gu), SE23_OK);
         /* Mean: v = v' - Omega x p. */
@@ -689,7 +660,7 @@ static void test_gauss_carried_conversion_rejects_bad_input_untouched(void **sta
     assert_int_equal(se23_earth_model_init_wgs84(SE23_FRAME_ENU, SE23_R(0.5), SE23_R(0),
                                                  SE23_R(0.01), SE23_R(0.01), &model), SE23_OK);
     se23_gauss_t g, out, out0;
-    random_gauss(&rng, 9, &g);
+    gt_random_gauss(&rng, 9, &g);
     memset(&out, SENTINEL, sizeof out);
     out0 = out;
     g.P.m[S * 1 + 1] = -SE23_R(1);
