@@ -73,6 +73,8 @@ check: deps
 -include port/target.mk
 -include tools/harness.mk
 -include tools/bench.mk
+-include tools/paper.mk
+-include tools/accuracy/accuracy.mk
 
 clean:
 	rm -rf $(BUILD)
