@@ -34,12 +34,12 @@ TGT_BOARD_m7-double := mps2-an500
 
 $(TGT_REF_LIB): $(BUILD)/cmake-double/CMakeCache.txt tgt-always
 	cmake --build $(BUILD)/cmake-double --target se23_reference -j 1 >/dev/null
-$(TGT_GEN): tools/target/gen_vectors.cpp tests/target/tv.h tests/target/tv_list.h \
-            tests/reference/reference.hpp $(LIB_HDRS) $(TGT_REF_LIB)
+$(TGT_GEN): $(wildcard tools/target/gen_*.cpp tools/target/gen_*.hpp) tests/target/tv.h tests/target/tv_list.h \
+            $(wildcard tests/reference/*.hpp) $(LIB_HDRS) $(TGT_REF_LIB)
 	mkdir -p $(@D)
 	$(CXX) -std=c++17 -O1 -Wall -Wextra -Werror -isystem /usr/include/eigen3 \
 	    -Iinclude -Itests/reference -Itests/target -DSE23_CFG_DOUBLE=1 \
-	    $< $(TGT_REF_LIB) -o $@
+	    $(filter %.cpp,$^) $(TGT_REF_LIB) -o $@
 
 # $(call tgt_variant,variant,arch flags,SE23_CFG_DOUBLE)
 define tgt_variant

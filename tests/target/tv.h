@@ -22,6 +22,9 @@
 /** Reals in a struct of reals. */
 #define TV_REALS(T) ((int)(sizeof(T) / sizeof(se23_real_t)))
 
+/** Reals of a se23_preint_t in a row: delta (pose), dt, n. */
+#define TV_PREINT_REALS (TV_REALS(se23_pose_t) + 2)
+
 /** Literals of the generated tables. */
 #define TV_R(x) ((se23_real_t)(x))
 

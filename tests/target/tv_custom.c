@@ -1,10 +1,240 @@
 /*
- * Hand-written adapters (tv_call_<fn>) for the TV_CUSTOM rows of tv_list.h:
- * routines whose arguments are not all structs of reals (scalars, enums,
- * several outputs). Same contract as the generic adapters in tv_runner.c:
- * unpack the input row, pre-fill outputs with TV_SENTINEL, call, pack the
- * outputs, return the status.
+ * Hand-written adapters (tv_load_<fn>, tv_call_<fn>, tv_store_<fn>) for the
+ * TV_CUSTOM rows of tv_list.h: routines with scalar or enum arguments, three
+ * or more inputs, or structs that are not all reals. Same contract as the
+ * generic adapters (tv.h): load unpacks the input row in argument order and
+ * fills the outputs with TV_SENTINEL; store packs the outputs. Enums and
+ * counters travel as reals in the rows.
  */
 #include <string.h>
 
 #include "tv.h"
+
+/* Copies the next bytes/sizeof(real) reals of a row into dst. */
+static void take(const se23_real_t **in, void *dst, size_t bytes)
+{
+    memcpy(dst, *in, bytes);
+    *in += bytes / sizeof(se23_real_t);
+}
+static se23_real_t take1(const se23_real_t **in) { return *(*in)++; }
+static void give(se23_real_t **out, const void *src, size_t bytes)
+{
+    memcpy(*out, src, bytes);
+    *out += bytes / sizeof(se23_real_t);
+}
+
+/* ---- earth.h ---------------------------------------------------------------- */
+
+static struct {
+    se23_frame_t frame;
+    se23_real_t lat, h, t, dt, dt_max, g;
+    se23_vec3_t g_n, w_ie_n, out;
+    se23_pose_t gamma;
+    se23_earth_model_t model;
+} e;
+
+static void e_clear(void)
+{
+    tv_fill_sentinel(&e.g, sizeof e.g);
+    tv_fill_sentinel(&e.out, sizeof e.out);
+    tv_fill_sentinel(&e.gamma, sizeof e.gamma);
+    tv_fill_sentinel(&e.model, sizeof e.model);
+}
+
+void tv_load_se23_earth_gravity(const se23_real_t *in)
+{
+    e.lat = take1(&in);
+    e.h = take1(&in);
+    e_clear();
+}
+int tv_call_se23_earth_gravity(void) { return (int)se23_earth_gravity(e.lat, e.h, &e.g); }
+void tv_store_se23_earth_gravity(se23_real_t *out) { out[0] = e.g; }
+
+void tv_load_se23_earth_gravity_vec(const se23_real_t *in)
+{
+    e.frame = (se23_frame_t)(int)take1(&in);
+    e.lat = take1(&in);
+    e.h = take1(&in);
+    e_clear();
+}
+int tv_call_se23_earth_gravity_vec(void)
+{
+    return (int)se23_earth_gravity_vec(e.frame, e.lat, e.h, &e.out);
+}
+void tv_store_se23_earth_gravity_vec(se23_real_t *out) { give(&out, &e.out, sizeof e.out); }
+
+void tv_load_se23_earth_rate(const se23_real_t *in)
+{
+    e.frame = (se23_frame_t)(int)take1(&in);
+    e.lat = take1(&in);
+    e_clear();
+}
+int tv_call_se23_earth_rate(void) { return (int)se23_earth_rate(e.frame, e.lat, &e.out); }
+void tv_store_se23_earth_rate(se23_real_t *out) { give(&out, &e.out, sizeof e.out); }
+
+void tv_load_se23_earth_gamma(const se23_real_t *in)
+{
+    take(&in, &e.g_n, sizeof e.g_n);
+    take(&in, &e.w_ie_n, sizeof e.w_ie_n);
+    e.t = take1(&in);
+    e_clear();
+}
+int tv_call_se23_earth_gamma(void) { return (int)se23_earth_gamma(&e.g_n, &e.w_ie_n, e.t, &e.gamma); }
+void tv_store_se23_earth_gamma(se23_real_t *out) { give(&out, &e.gamma, sizeof e.gamma); }
+
+void tv_load_se23_earth_model_init(const se23_real_t *in)
+{
+    take(&in, &e.g_n, sizeof e.g_n);
+    take(&in, &e.w_ie_n, sizeof e.w_ie_n);
+    e.dt = take1(&in);
+    e.dt_max = take1(&in);
+    e_clear();
+}
+int tv_call_se23_earth_model_init(void)
+{
+    return (int)se23_earth_model_init(&e.g_n, &e.w_ie_n, e.dt, e.dt_max, &e.model);
+}
+void tv_store_se23_earth_model_init(se23_real_t *out) { give(&out, &e.model, sizeof e.model); }
+
+void tv_load_se23_earth_model_init_wgs84(const se23_real_t *in)
+{
+    e.frame = (se23_frame_t)(int)take1(&in);
+    e.lat = take1(&in);
+    e.h = take1(&in);
+    e.dt = take1(&in);
+    e.dt_max = take1(&in);
+    e_clear();
+}
+int tv_call_se23_earth_model_init_wgs84(void)
+{
+    return (int)se23_earth_model_init_wgs84(e.frame, e.lat, e.h, e.dt, e.dt_max, &e.model);
+}
+void tv_store_se23_earth_model_init_wgs84(se23_real_t *out)
+{
+    give(&out, &e.model, sizeof e.model);
+}
+
+/* ---- imu.h ------------------------------------------------------------------ */
+
+static struct {
+    se23_earth_model_t model;
+    se23_pose_t gamma, T, ups, out;
+    se23_imu_sample_t s;
+    se23_real_t t;
+} m;
+
+void tv_load_se23_imu_transition(const se23_real_t *in)
+{
+    take(&in, &m.gamma, sizeof m.gamma);
+    take(&in, &m.T, sizeof m.T);
+    take(&in, &m.ups, sizeof m.ups);
+    m.t = take1(&in);
+    tv_fill_sentinel(&m.out, sizeof m.out);
+}
+int tv_call_se23_imu_transition(void)
+{
+    se23_imu_transition(&m.gamma, &m.T, &m.ups, m.t, &m.out);
+    return SE23_OK;
+}
+void tv_store_se23_imu_transition(se23_real_t *out) { give(&out, &m.out, sizeof m.out); }
+
+void tv_load_se23_imu_step(const se23_real_t *in)
+{
+    take(&in, &m.model, sizeof m.model);
+    take(&in, &m.T, sizeof m.T);
+    take(&in, &m.s, sizeof m.s);
+    tv_fill_sentinel(&m.out, sizeof m.out);
+}
+int tv_call_se23_imu_step(void) { return (int)se23_imu_step(&m.model, &m.T, &m.s, &m.out); }
+void tv_store_se23_imu_step(se23_real_t *out) { give(&out, &m.out, sizeof m.out); }
+
+/* ---- preint.h: se23_preint_t travels as delta, dt, n ---------------------- */
+
+static struct {
+    se23_earth_model_t model;
+    se23_preint_t f;
+    se23_imu_sample_t s;
+    se23_pose_t ups, T, out;
+    se23_real_t dt;
+} p;
+
+static void take_preint(const se23_real_t **in, se23_preint_t *f)
+{
+    take(in, &f->delta, sizeof f->delta);
+    f->dt = take1(in);
+    f->n = (uint32_t)take1(in);
+}
+static void fill_preint(se23_preint_t *f)
+{
+    tv_fill_sentinel(&f->delta, sizeof f->delta);
+    f->dt = TV_SENTINEL;
+    f->n = 0xFFFFFFFFu;
+}
+static void give_preint(se23_real_t *out, const se23_preint_t *f)
+{
+    give(&out, &f->delta, sizeof f->delta);
+    out[0] = f->dt;
+    out[1] = f->n == 0xFFFFFFFFu ? TV_SENTINEL : (se23_real_t)f->n;
+}
+
+void tv_load_se23_preint_reset(const se23_real_t *in)
+{
+    (void)in;
+    fill_preint(&p.f);
+}
+int tv_call_se23_preint_reset(void)
+{
+    se23_preint_reset(&p.f);
+    return SE23_OK;
+}
+void tv_store_se23_preint_reset(se23_real_t *out) { give_preint(out, &p.f); }
+
+/* se23_preint_add updates f in place; on error f must be unchanged, which
+ * the runner cannot see through the sentinel: store reports the sentinel
+ * unless f changed. */
+static se23_preint_t preint_before;
+void tv_load_se23_preint_add(const se23_real_t *in)
+{
+    take_preint(&in, &p.f);
+    take(&in, &p.s, sizeof p.s);
+    preint_before = p.f;
+}
+int tv_call_se23_preint_add(void) { return (int)se23_preint_add(&p.f, &p.s); }
+void tv_store_se23_preint_add(se23_real_t *out)
+{
+    se23_preint_t f = p.f;
+    if (memcmp(&f, &preint_before, sizeof f) == 0) {
+        fill_preint(&f);
+    }
+    give_preint(out, &f);
+}
+
+void tv_load_se23_preint_add_increment(const se23_real_t *in)
+{
+    take_preint(&in, &p.f);
+    take(&in, &p.ups, sizeof p.ups);
+    p.dt = take1(&in);
+}
+int tv_call_se23_preint_add_increment(void)
+{
+    se23_preint_add_increment(&p.f, &p.ups, p.dt);
+    return SE23_OK;
+}
+void tv_store_se23_preint_add_increment(se23_real_t *out) { give_preint(out, &p.f); }
+
+void tv_load_se23_preint_predict(const se23_real_t *in)
+{
+    take(&in, &p.model, sizeof p.model);
+    take_preint(&in, &p.f);
+    take(&in, &p.T, sizeof p.T);
+    tv_fill_sentinel(&p.out, sizeof p.out);
+}
+int tv_call_se23_preint_predict(void) { return (int)se23_preint_predict(&p.model, &p.f, &p.T, &p.out); }
+void tv_store_se23_preint_predict(se23_real_t *out) { give(&out, &p.out, sizeof p.out); }
+
+void tv_load_se23_preint_predict_carried(const se23_real_t *in) { tv_load_se23_preint_predict(in); }
+int tv_call_se23_preint_predict_carried(void)
+{
+    return (int)se23_preint_predict_carried(&p.model, &p.f, &p.T, &p.out);
+}
+void tv_store_se23_preint_predict_carried(se23_real_t *out) { give(&out, &p.out, sizeof p.out); }

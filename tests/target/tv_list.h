@@ -20,6 +20,9 @@
  * (eps of the build's precision, max over the output row).
  * Routines tested on the target without vectors (tv_runner.c): se23_status_str.
  */
+#include "se23/earth.h"
+#include "se23/imu.h"
+#include "se23/preint.h"
 #include "se23/se23.h"
 #include "se23/so3.h"
 
@@ -50,3 +53,33 @@ TV_S1(se23_log, se23_pose_t, se23_tangent_t, 16)
 TV_V1(se23_adjoint, se23_pose_t, se23_mat9_t, 8)
 TV_V1(se23_adjoint_inv, se23_pose_t, se23_mat9_t, 8)
 TV_C1(se23_pose_check, se23_pose_t, 0)
+
+/* earth.h (se23_frame_t travels as a real) */
+TV_CUSTOM(se23_earth_gravity, 2, 1, 8)
+TV_CUSTOM(se23_earth_gravity_vec, 3, 3, 8)
+TV_CUSTOM(se23_earth_rate, 2, 3, 8)
+TV_CUSTOM(se23_earth_gamma, 2 * TV_REALS(se23_vec3_t) + 1, TV_REALS(se23_pose_t), 16)
+TV_CUSTOM(se23_earth_model_init, 2 * TV_REALS(se23_vec3_t) + 2, TV_REALS(se23_earth_model_t), 16)
+TV_CUSTOM(se23_earth_model_init_wgs84, 5, TV_REALS(se23_earth_model_t), 16)
+
+/* imu.h */
+TV_S1(se23_imu_increment, se23_imu_sample_t, se23_pose_t, 16)
+TV_S1(se23_imu_increment_euler, se23_imu_sample_t, se23_pose_t, 16)
+TV_CUSTOM(se23_imu_transition, 3 * TV_REALS(se23_pose_t) + 1, TV_REALS(se23_pose_t), 16)
+TV_CUSTOM(se23_imu_step,
+          TV_REALS(se23_earth_model_t) + TV_REALS(se23_pose_t) + TV_REALS(se23_imu_sample_t),
+          TV_REALS(se23_pose_t), 16)
+TV_V2(se23_imu_carried_from_user, se23_earth_model_t, se23_pose_t, se23_pose_t, 8)
+TV_V2(se23_imu_user_from_carried, se23_earth_model_t, se23_pose_t, se23_pose_t, 8)
+
+/* preint.h (se23_preint_t travels as delta, dt, n: 17 reals) */
+TV_CUSTOM(se23_preint_reset, 0, TV_PREINT_REALS, 0)
+TV_CUSTOM(se23_preint_add, TV_PREINT_REALS + TV_REALS(se23_imu_sample_t), TV_PREINT_REALS, 16)
+TV_CUSTOM(se23_preint_add_increment, TV_PREINT_REALS + TV_REALS(se23_pose_t) + 1,
+          TV_PREINT_REALS, 16)
+TV_CUSTOM(se23_preint_predict,
+          TV_REALS(se23_earth_model_t) + TV_PREINT_REALS + TV_REALS(se23_pose_t),
+          TV_REALS(se23_pose_t), 16)
+TV_CUSTOM(se23_preint_predict_carried,
+          TV_REALS(se23_earth_model_t) + TV_PREINT_REALS + TV_REALS(se23_pose_t),
+          TV_REALS(se23_pose_t), 16)

@@ -109,7 +109,7 @@ static int run_routine(const tv_routine_t *r)
         fails += ok ? 0 : 1;
     }
     worst = worst < TV_R(99.99) ? worst : TV_R(99.99);
-    printf("%-26s %4d vectors  worst %4d%% of tol (%d eps)  %s\n", r->name, d->n_vec,
+    printf("%-30s %4d vectors  worst %4d%% of tol (%d eps)  %s\n", r->name, d->n_vec,
            (int)(worst * TV_R(100)), r->tol, fails != 0 ? "FAIL" : "ok");
     return fails;
 }
@@ -130,7 +130,7 @@ static int check_status_str(void)
             ++fails;
         }
     }
-    printf("%-26s %4u values   %s\n", "se23_status_str", i, fails != 0 ? "FAIL" : "ok");
+    printf("%-30s %4u values   %s\n", "se23_status_str", i, fails != 0 ? "FAIL" : "ok");
     return fails;
 }
 

@@ -3,7 +3,7 @@
  * bench_steps.h): one shared, realistic setup -- a 200 Hz IMU sample on the
  * rotating Earth (WGS-84, NED, latitude 0.8 rad), a moving pose, a
  * covariance with and without bias states -- and one small function per
- * operation. Adding an operation: one function and one row of bench_steps[].
+ * operation (gauss.h so far, and the composite steps). Adding an operation: one function and one row of bench_steps[].
  * When a routine gains reference vectors (a row of tv_list.h), drop its row
  * here: the benchmark runs every tv_list.h row by itself.
  */
@@ -13,7 +13,6 @@
 #include "se23/earth.h"
 #include "se23/gauss.h"
 #include "se23/imu.h"
-#include "se23/preint.h"
 #include "se23/so3.h"
 
 static struct {
@@ -25,9 +24,6 @@ static struct {
     se23_mat9x6_t B, B2;
     se23_mat9_t Q, S, F;
     se23_tangent_t x, y;
-    se23_preint_t f;
-    se23_vec3_t g_n, w_ie_n, v;
-    se23_real_t r;
 } c;
 
 static void set_gauss(se23_gauss_t *g, int n)
@@ -52,8 +48,6 @@ static void setup(void)
     memset(&c, 0, sizeof c);
     (void)se23_earth_model_init_wgs84(SE23_FRAME_NED, SE23_R(0.8), SE23_R(100), SE23_R(0.005),
                                       SE23_R(0.02), &c.model);
-    c.g_n = c.model.g_n;
-    c.w_ie_n = c.model.w_ie_n;
     c.s.w_ib_b.v[0] = SE23_R(0.1);
     c.s.w_ib_b.v[1] = SE23_R(-0.2);
     c.s.w_ib_b.v[2] = SE23_R(0.3);
@@ -79,48 +73,8 @@ static void setup(void)
         c.S.m[9 * i + i] = SE23_R(1e-2);
         c.x.v[i] = SE23_R(0.1) * (se23_real_t)(i + 1);
     }
-    se23_preint_reset(&c.f);
-    for (i = 0; i < 10; ++i) {
-        (void)se23_preint_add(&c.f, &c.s);
-    }
 }
 
-/* earth.h */
-static int earth_gravity(void) { return (int)se23_earth_gravity(SE23_R(0.8), SE23_R(100), &c.r); }
-static int earth_gravity_vec(void)
-{
-    return (int)se23_earth_gravity_vec(SE23_FRAME_NED, SE23_R(0.8), SE23_R(100), &c.v);
-}
-static int earth_rate(void) { return (int)se23_earth_rate(SE23_FRAME_NED, SE23_R(0.8), &c.v); }
-static int earth_gamma(void) { return (int)se23_earth_gamma(&c.g_n, &c.w_ie_n, SE23_R(0.005), &c.out); }
-static int earth_model_init(void)
-{
-    return (int)se23_earth_model_init(&c.g_n, &c.w_ie_n, SE23_R(0.005), SE23_R(0.02), &c.model);
-}
-static int earth_model_init_wgs84(void)
-{
-    return (int)se23_earth_model_init_wgs84(SE23_FRAME_NED, SE23_R(0.8), SE23_R(100),
-                                            SE23_R(0.005), SE23_R(0.02), &c.model);
-}
-/* imu.h */
-static int imu_increment(void) { return (int)se23_imu_increment(&c.s, &c.out); }
-static int imu_increment_euler(void) { return (int)se23_imu_increment_euler(&c.s, &c.out); }
-static int imu_transition(void)
-{
-    se23_imu_transition(&c.model.gamma, &c.T, &c.U, SE23_R(0.005), &c.out);
-    return 0;
-}
-static int imu_step(void) { return (int)se23_imu_step(&c.model, &c.T, &c.s, &c.out); }
-static int imu_carried_from_user(void)
-{
-    se23_imu_carried_from_user(&c.model, &c.T, &c.out);
-    return 0;
-}
-static int imu_user_from_carried(void)
-{
-    se23_imu_user_from_carried(&c.model, &c.T, &c.out);
-    return 0;
-}
 /* gauss.h */
 static int gauss_fk_apply(void)
 {
@@ -153,24 +107,6 @@ static int gauss_propagate15(void)
 }
 static int gauss_from_carried15(void) { return (int)se23_gauss_from_carried(&c.model, &c.g15, &c.gout); }
 static int gauss_to_carried15(void) { return (int)se23_gauss_to_carried(&c.model, &c.g15, &c.gout); }
-/* preint.h */
-static int preint_reset(void)
-{
-    se23_preint_t f;
-    se23_preint_reset(&f);
-    return (int)f.n;
-}
-static int preint_add(void) { return (int)se23_preint_add(&c.f, &c.s); }
-static int preint_add_increment(void)
-{
-    se23_preint_add_increment(&c.f, &c.U, c.s.dt);
-    return 0;
-}
-static int preint_predict(void) { return (int)se23_preint_predict(&c.model, &c.f, &c.T, &c.out); }
-static int preint_predict_carried(void)
-{
-    return (int)se23_preint_predict_carried(&c.model, &c.f, &c.T, &c.out);
-}
 /* Composite: one full propagation step (mean + covariance), rotating Earth. */
 static int step_cov9(void)
 {
@@ -186,18 +122,6 @@ static int step_cov15_basic(void)
 }
 
 const bench_step_t bench_steps[] = {
-    {"se23_earth_gravity", setup, earth_gravity},
-    {"se23_earth_gravity_vec", setup, earth_gravity_vec},
-    {"se23_earth_rate", setup, earth_rate},
-    {"se23_earth_gamma", setup, earth_gamma},
-    {"se23_earth_model_init", setup, earth_model_init},
-    {"se23_earth_model_init_wgs84", setup, earth_model_init_wgs84},
-    {"se23_imu_increment", setup, imu_increment},
-    {"se23_imu_increment_euler", setup, imu_increment_euler},
-    {"se23_imu_transition", setup, imu_transition},
-    {"se23_imu_step", setup, imu_step},
-    {"se23_imu_carried_from_user", setup, imu_carried_from_user},
-    {"se23_imu_user_from_carried", setup, imu_user_from_carried},
     {"se23_gauss_fk_apply", setup, gauss_fk_apply},
     {"se23_gauss_fk", setup, gauss_fk},
     {"se23_gauss_fk_mul", setup, gauss_fk_mul},
@@ -208,11 +132,6 @@ const bench_step_t bench_steps[] = {
     {"se23_gauss_propagate (n=15)", setup, gauss_propagate15},
     {"se23_gauss_from_carried (n=15)", setup, gauss_from_carried15},
     {"se23_gauss_to_carried (n=15)", setup, gauss_to_carried15},
-    {"se23_preint_reset", setup, preint_reset},
-    {"se23_preint_add", setup, preint_add},
-    {"se23_preint_add_increment", setup, preint_add_increment},
-    {"se23_preint_predict", setup, preint_predict},
-    {"se23_preint_predict_carried", setup, preint_predict_carried},
     {"STEP mean+cov n=9 (se23_gauss_predict)", setup, step_cov9},
     {"STEP mean+cov n=15 (se23_gauss_predict)", setup, step_cov15},
     {"STEP mean+cov n=15, basic B (se23_gauss_predict)", setup, step_cov15_basic},
