@@ -9,7 +9,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include <lcm/lcm.h>
 #include <math.h>
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -45,14 +44,6 @@ typedef struct {
     int64_t last_progress_ns;
 } node_t;
 
-static volatile sig_atomic_t stop_flag = 0;
-
-static void on_signal(int sig)
-{
-    (void)sig;
-    stop_flag = 1;
-}
-
 static void usage(FILE *f)
 {
     fprintf(f,
@@ -78,9 +69,28 @@ static void usage(FILE *f)
 
 static int parse_args(int argc, char **argv, node_opts_t *o, ins_config_t *c)
 {
-    const harness_imu_profile_t *prof = harness_imu_profile(HARNESS_IMU_MEMS);
+    const double inf = HUGE_VAL;
     double rate = 200.0, lat_deg = 45.0, max_gap = -1.0;
-    int i;
+    int profile = HARNESS_IMU_MEMS;
+    const harness_imu_profile_t *prof;
+    const harness_opt_t opts[] = {
+        {"--in", HOPT_STR, &o->in_url, 0, 0, NULL},
+        {"--out", HOPT_STR, &o->out_url, 0, 0, NULL},
+        {"--imu", HOPT_CHOICE, &profile, 0, 0, harness_imu_profile_find},
+        {"--imu-rate", HOPT_DOUBLE, &rate, 1.0, 1e5, NULL},
+        {"--earth", HOPT_CHOICE, &c->earth_rotation, 0, 0, harness_on_off},
+        {"--lat", HOPT_DOUBLE, &lat_deg, -90.0, 90.0, NULL},
+        {"--bias-states", HOPT_CHOICE, &c->bias_states, 0, 0, harness_on_off},
+        {"--nav-rate", HOPT_DOUBLE, &o->nav_rate, 1e-3, inf, NULL},
+        {"--gate", HOPT_DOUBLE, &c->gnss_gate, 0.0, inf, NULL},
+        {"--max-gap", HOPT_DOUBLE, &max_gap, 1e-6, 1.0, NULL},
+        {"--max-outage", HOPT_DOUBLE, &c->max_outage, 0.0, inf, NULL},
+        {"--preint", HOPT_DOUBLE, &c->preint_window, 0.0, inf, NULL},
+        {"--idle-timeout", HOPT_DOUBLE, &o->idle_timeout, 0.0, inf, NULL},
+        {"--ready-file", HOPT_STR, &o->ready_file, 0, 0, NULL},
+        {"--exit-on-end", HOPT_FLAG, &o->exit_on_end, 1, 0, NULL},
+        {"--progress", HOPT_FLAG, &o->progress, 1, 0, NULL},
+    };
     o->in_url = "file://sim.log?speed=0";
     o->out_url = NULL;
     o->nav_rate = 50.0;
@@ -95,68 +105,11 @@ static int parse_args(int argc, char **argv, node_opts_t *o, ins_config_t *c)
     c->outage_accel = 1.0;
     c->outage_rate = 0.05;
     c->gnss_gate = 30.0;
-    for (i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        const char *v = (i + 1 < argc) ? argv[i + 1] : NULL;
-        int bad = 0;
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            usage(stdout);
-            exit(0);
-        } else if (strcmp(a, "--progress") == 0) {
-            o->progress = 1;
-            continue;
-        } else if (strcmp(a, "--exit-on-end") == 0) {
-            o->exit_on_end = 1;
-            continue;
-        }
-        if (v == NULL) {
-            fprintf(stderr, "se23-ins: %s needs a value (or is unknown)\n", a);
-            return -1;
-        }
-        i++;
-        if (strcmp(a, "--in") == 0) {
-            o->in_url = v;
-        } else if (strcmp(a, "--out") == 0) {
-            o->out_url = v;
-        } else if (strcmp(a, "--imu") == 0) {
-            int k = harness_imu_profile_find(v);
-            bad = k < 0;
-            if (!bad) {
-                prof = harness_imu_profile(k);
-            }
-        } else if (strcmp(a, "--imu-rate") == 0) {
-            bad = harness_parse_double(v, &rate) || rate < 1.0 || rate > 100000.0;
-        } else if (strcmp(a, "--earth") == 0) {
-            c->earth_rotation = strcmp(v, "on") == 0;
-            bad = !c->earth_rotation && strcmp(v, "off") != 0;
-        } else if (strcmp(a, "--lat") == 0) {
-            bad = harness_parse_double(v, &lat_deg) || fabs(lat_deg) > 90.0;
-        } else if (strcmp(a, "--bias-states") == 0) {
-            c->bias_states = strcmp(v, "on") == 0;
-            bad = !c->bias_states && strcmp(v, "off") != 0;
-        } else if (strcmp(a, "--nav-rate") == 0) {
-            bad = harness_parse_double(v, &o->nav_rate) || o->nav_rate <= 0.0;
-        } else if (strcmp(a, "--gate") == 0) {
-            bad = harness_parse_double(v, &c->gnss_gate) || c->gnss_gate < 0.0;
-        } else if (strcmp(a, "--max-gap") == 0) {
-            bad = harness_parse_double(v, &max_gap) || max_gap <= 0.0 || max_gap > 1.0;
-        } else if (strcmp(a, "--max-outage") == 0) {
-            bad = harness_parse_double(v, &c->max_outage) || c->max_outage < 0.0;
-        } else if (strcmp(a, "--preint") == 0) {
-            bad = harness_parse_double(v, &c->preint_window) || c->preint_window < 0.0;
-        } else if (strcmp(a, "--ready-file") == 0) {
-            o->ready_file = v;
-        } else if (strcmp(a, "--idle-timeout") == 0) {
-            bad = harness_parse_double(v, &o->idle_timeout) || o->idle_timeout < 0.0;
-        } else {
-            fprintf(stderr, "se23-ins: unknown option %s\n", a);
-            return -1;
-        }
-        if (bad) {
-            fprintf(stderr, "se23-ins: bad value for %s: %s\n", a, v);
-            return -1;
-        }
+    if (harness_parse_opts("se23-ins", argc, argv, opts, (int)(sizeof opts / sizeof opts[0]),
+                           usage, NULL, NULL) != 0) {
+        return -1;
     }
+    prof = harness_imu_profile(profile);
     if (o->out_url == NULL) {
         o->out_url = strncmp(o->in_url, "file://", 7) == 0 ? "file://ins.log?mode=w" : o->in_url;
     }
@@ -401,8 +354,7 @@ int main(int argc, char **argv)
         lcm_destroy(in);
         return 1;
     }
-    signal(SIGINT, on_signal);
-    signal(SIGTERM, on_signal);
+    harness_catch_stop_signals();
     lcm_subscription_set_queue_capacity(lcm_subscribe(in, HARNESS_CH_IMU, on_imu, &nd), 10000);
     lcm_subscription_set_queue_capacity(lcm_subscribe(in, HARNESS_CH_GNSS, on_gnss, &nd), 1000);
     lcm_subscribe(in, HARNESS_CH_INIT, on_init, &nd);
@@ -417,7 +369,7 @@ int main(int argc, char **argv)
     is_file = strncmp(nd.o.in_url, "file://", 7) == 0;
     cpu0 = cpu_seconds();
     last_input = harness_now_ns();
-    while (!stop_flag && !(nd.o.exit_on_end && nd.ended)) {
+    while (!harness_stop_requested() && !(nd.o.exit_on_end && nd.ended)) {
         if (is_file) {
             if (lcm_handle(in) != 0) {
                 break; /* end of the log */

@@ -4,6 +4,7 @@
 
 #include <errno.h>
 #include <math.h>
+#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -107,6 +108,127 @@ int harness_parse_vec3(const char *s, double out[3])
     }
     memcpy(out, tmp, sizeof tmp);
     return 0;
+}
+
+int harness_on_off(const char *value)
+{
+    if (strcmp(value, "on") == 0) {
+        return 1;
+    }
+    return strcmp(value, "off") == 0 ? 0 : -1;
+}
+
+static int in_range(double x, const harness_opt_t *o)
+{
+    return x >= o->lo && x <= o->hi;
+}
+
+/* Stores value into the option's destination; returns 0 if it is valid. */
+static int set_value(const harness_opt_t *o, const char *value)
+{
+    double x, v3[3];
+    int64_t k;
+    int idx;
+    switch (o->kind) {
+    case HOPT_DOUBLE:
+        if (harness_parse_double(value, &x) != 0 || !in_range(x, o)) {
+            return -1;
+        }
+        *(double *)o->dst = x;
+        return 0;
+    case HOPT_I64:
+        if (harness_parse_i64(value, &k) != 0) {
+            return -1;
+        }
+        *(int64_t *)o->dst = k;
+        return 0;
+    case HOPT_STR:
+        *(const char **)o->dst = value;
+        return 0;
+    case HOPT_VEC3:
+        if (harness_parse_vec3(value, v3) != 0 || !in_range(v3[0], o) || !in_range(v3[1], o) ||
+            !in_range(v3[2], o)) {
+            return -1;
+        }
+        memcpy(o->dst, v3, sizeof v3);
+        return 0;
+    case HOPT_CHOICE:
+        idx = o->find(value);
+        if (idx < 0) {
+            return -1;
+        }
+        *(int *)o->dst = idx;
+        return 0;
+    case HOPT_FLAG:
+    default:
+        return -1;
+    }
+}
+
+int harness_parse_opts(const char *prog, int argc, char **argv, const harness_opt_t *opt, int n,
+                       void (*usage)(FILE *), const char **pos, int *n_pos)
+{
+    int i, j;
+    if (n_pos != NULL) {
+        *n_pos = 0;
+    }
+    for (i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        const harness_opt_t *o = NULL;
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            usage(stdout);
+            exit(0);
+        }
+        if (a[0] != '-' && pos != NULL) {
+            pos[(*n_pos)++] = a;
+            continue;
+        }
+        for (j = 0; j < n && o == NULL; j++) {
+            if (strcmp(a, opt[j].name) == 0) {
+                o = &opt[j];
+            }
+        }
+        if (o == NULL) {
+            fprintf(stderr, "%s: unknown option or argument %s\n", prog, a);
+            return -1;
+        }
+        if (o->kind == HOPT_FLAG) {
+            *(int *)o->dst = (int)o->lo;
+            continue;
+        }
+        if (i + 1 >= argc) {
+            fprintf(stderr, "%s: %s needs a value\n", prog, a);
+            return -1;
+        }
+        if (set_value(o, argv[++i]) != 0) {
+            fprintf(stderr, "%s: bad value for %s: %s\n", prog, a, argv[i]);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+static volatile sig_atomic_t stop_flag = 0;
+
+static void on_stop_signal(int sig)
+{
+    (void)sig;
+    stop_flag = 1;
+}
+
+void harness_catch_stop_signals(void)
+{
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_stop_signal;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+}
+
+int harness_stop_requested(void)
+{
+    return stop_flag != 0;
 }
 
 int64_t harness_now_ns(void)

@@ -10,6 +10,7 @@
 #define SE23_HARNESS_H
 
 #include <stdint.h>
+#include <stdio.h>
 
 #define HARNESS_CH_IMU "SE23_IMU"           /**< se23lcm_imu_sample_t */
 #define HARNESS_CH_TRUTH "SE23_TRUTH"       /**< se23lcm_truth_t */
@@ -49,6 +50,37 @@ const harness_imu_profile_t *harness_imu_profile(int index);
 /** Index of the profile called name, or -1. */
 int harness_imu_profile_find(const char *name);
 
+/** Kinds of command-line options (harness_parse_opts). */
+typedef enum {
+    HOPT_FLAG,   /**< no value; stores (int)lo into *(int *)dst */
+    HOPT_DOUBLE, /**< number in [lo, hi] into *(double *)dst */
+    HOPT_I64,    /**< integer into *(int64_t *)dst */
+    HOPT_STR,    /**< the string into *(const char **)dst */
+    HOPT_VEC3,   /**< "x,y,z", each in [lo, hi], into (double *)dst */
+    HOPT_CHOICE  /**< find(value) >= 0 into *(int *)dst */
+} harness_opt_kind_t;
+
+/** One command-line option: "--name VALUE" (or "--name" for a flag). */
+typedef struct {
+    const char *name;
+    harness_opt_kind_t kind;
+    void *dst;
+    double lo, hi;
+    int (*find)(const char *value); /**< HOPT_CHOICE: index of value, or -1 */
+} harness_opt_t;
+
+/**
+ * Parses argv against the table opt[0..n-1]. "--help"/"-h" prints usage to
+ * stdout and exits 0. Arguments not starting with '-' go to pos (up to
+ * argc entries; *n_pos counts them) if pos is not NULL, else are errors.
+ * Returns 0, or -1 after printing what is wrong (prefixed with prog).
+ */
+int harness_parse_opts(const char *prog, int argc, char **argv, const harness_opt_t *opt, int n,
+                       void (*usage)(FILE *), const char **pos, int *n_pos);
+
+/** 1 for "on", 0 for "off", -1 otherwise (a HOPT_CHOICE finder). */
+int harness_on_off(const char *value);
+
 /** Parses a whole decimal/float number; returns 0 on success. */
 int harness_parse_double(const char *s, double *out);
 
@@ -57,6 +89,12 @@ int harness_parse_i64(const char *s, int64_t *out);
 
 /** Parses "x,y,z"; returns 0 on success. */
 int harness_parse_vec3(const char *s, double out[3]);
+
+/** SIGINT and SIGTERM then only set a flag (graceful stop of a loop). */
+void harness_catch_stop_signals(void);
+
+/** Nonzero once SIGINT or SIGTERM arrived (after harness_catch_stop_signals). */
+int harness_stop_requested(void);
 
 /** Monotonic wall clock [ns]. */
 int64_t harness_now_ns(void);

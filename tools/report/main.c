@@ -30,7 +30,7 @@ typedef struct {
     double check_nees_lo, check_nees_hi; /* band on mean NEES / dof */
     double check_max_pos;  /* final position error bound [m] (<= 0: none) */
     int n_logs;
-    char **logs;
+    const char **logs;
 } rep_opts_t;
 
 static void usage(FILE *f)
@@ -49,7 +49,17 @@ static void usage(FILE *f)
 
 static int parse_args(int argc, char **argv, rep_opts_t *o)
 {
-    int i;
+    const double inf = HUGE_VAL;
+    const harness_opt_t opts[] = {
+        {"--plots", HOPT_STR, &o->plots_dir, 0, 0, NULL},
+        {"--plot-script", HOPT_STR, &o->plot_script, 0, 0, NULL},
+        {"--python", HOPT_STR, &o->python, 0, 0, NULL},
+        {"--check", HOPT_FLAG, &o->check, 1, 0, NULL},
+        {"--check-frac", HOPT_DOUBLE, &o->check_frac, 0.0, 1.0, NULL},
+        {"--nees-lo", HOPT_DOUBLE, &o->check_nees_lo, 0.0, inf, NULL},
+        {"--nees-hi", HOPT_DOUBLE, &o->check_nees_hi, 0.0, inf, NULL},
+        {"--max-pos-err", HOPT_DOUBLE, &o->check_max_pos, 0.0, inf, NULL},
+    };
     memset(o, 0, sizeof *o);
     o->plot_script = "tools/report/plot.py";
     o->python = "/usr/bin/python3";
@@ -57,50 +67,10 @@ static int parse_args(int argc, char **argv, rep_opts_t *o)
     o->check_nees_lo = 0.3;
     o->check_nees_hi = 3.0;
     o->logs = malloc(sizeof(char *) * (size_t)argc);
-    if (o->logs == NULL) {
+    if (o->logs == NULL ||
+        harness_parse_opts("se23-report", argc, argv, opts, (int)(sizeof opts / sizeof opts[0]),
+                           usage, o->logs, &o->n_logs) != 0) {
         return -1;
-    }
-    for (i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        const char *v = (i + 1 < argc) ? argv[i + 1] : NULL;
-        int bad = 0;
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            usage(stdout);
-            exit(0);
-        } else if (strcmp(a, "--check") == 0) {
-            o->check = 1;
-            continue;
-        } else if (a[0] != '-') {
-            o->logs[o->n_logs++] = argv[i];
-            continue;
-        }
-        if (v == NULL) {
-            fprintf(stderr, "se23-report: %s needs a value (or is unknown)\n", a);
-            return -1;
-        }
-        i++;
-        if (strcmp(a, "--plots") == 0) {
-            o->plots_dir = v;
-        } else if (strcmp(a, "--plot-script") == 0) {
-            o->plot_script = v;
-        } else if (strcmp(a, "--python") == 0) {
-            o->python = v;
-        } else if (strcmp(a, "--check-frac") == 0) {
-            bad = harness_parse_double(v, &o->check_frac);
-        } else if (strcmp(a, "--nees-lo") == 0) {
-            bad = harness_parse_double(v, &o->check_nees_lo);
-        } else if (strcmp(a, "--nees-hi") == 0) {
-            bad = harness_parse_double(v, &o->check_nees_hi);
-        } else if (strcmp(a, "--max-pos-err") == 0) {
-            bad = harness_parse_double(v, &o->check_max_pos);
-        } else {
-            fprintf(stderr, "se23-report: unknown option %s\n", a);
-            return -1;
-        }
-        if (bad) {
-            fprintf(stderr, "se23-report: bad value for %s: %s\n", a, v);
-            return -1;
-        }
     }
     return o->n_logs > 0 ? 0 : -1;
 }
@@ -409,7 +379,7 @@ int main(int argc, char **argv)
         ok = ok && pass;
     }
     free(ep);
-    free(o.logs);
+    free((void *)o.logs);
     log_free(&d);
     return ok ? 0 : 1;
 }

@@ -16,7 +16,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include <lcm/lcm.h>
 #include <math.h>
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -53,14 +52,6 @@ typedef struct {
     int track;
 } sim_opts_t;
 
-static volatile sig_atomic_t stop_flag = 0;
-
-static void on_signal(int sig)
-{
-    (void)sig;
-    stop_flag = 1;
-}
-
 static void usage(FILE *f)
 {
     fprintf(f,
@@ -85,10 +76,32 @@ static void usage(FILE *f)
             "  --progress                      progress line on stderr\n");
 }
 
+static int find_scenario(const char *name)
+{
+    return traj_find(name);
+}
+
 static int parse_args(int argc, char **argv, sim_opts_t *o)
 {
-    int i;
-    int64_t seed;
+    const double inf = HUGE_VAL;
+    const harness_opt_t opts[] = {
+        {"--scenario", HOPT_CHOICE, &o->scenario, 0, 0, find_scenario},
+        {"--duration", HOPT_DOUBLE, &o->duration, 1e-3, inf, NULL},
+        {"--imu-rate", HOPT_DOUBLE, &o->imu_rate, 100.0, 2000.0, NULL},
+        {"--imu", HOPT_CHOICE, &o->profile, 0, 0, harness_imu_profile_find},
+        {"--earth", HOPT_CHOICE, &o->earth, 0, 0, harness_on_off},
+        {"--lat", HOPT_DOUBLE, &o->lat_deg, -90.0, 90.0, NULL},
+        {"--gnss-rate", HOPT_DOUBLE, &o->gnss_rate, 0.0, inf, NULL},
+        {"--gnss-sigma-p", HOPT_VEC3, o->gnss_sp, 1e-6, inf, NULL},
+        {"--gnss-sigma-v", HOPT_VEC3, o->gnss_sv, 1e-6, inf, NULL},
+        {"--truth-rate", HOPT_DOUBLE, &o->truth_rate, 1e-3, inf, NULL},
+        {"--seed", HOPT_I64, &o->seed, 0, 0, NULL},
+        {"--init-sigma", HOPT_VEC3, o->init_sigma, 0.0, inf, NULL},
+        {"--url", HOPT_STR, &o->url, 0, 0, NULL},
+        {"--speed", HOPT_DOUBLE, &o->speed, 0.0, inf, NULL},
+        {"--no-track", HOPT_FLAG, &o->track, 0, 0, NULL},
+        {"--progress", HOPT_FLAG, &o->progress, 1, 0, NULL},
+    };
     o->scenario = TRAJ_UAV;
     o->duration = -1.0;
     o->imu_rate = 200.0;
@@ -111,67 +124,9 @@ static int parse_args(int argc, char **argv, sim_opts_t *o)
     o->speed = -1.0;
     o->progress = 0;
     o->track = 1;
-    for (i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        const char *v = (i + 1 < argc) ? argv[i + 1] : NULL;
-        int bad = 0;
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            usage(stdout);
-            exit(0);
-        } else if (strcmp(a, "--progress") == 0) {
-            o->progress = 1;
-            continue;
-        } else if (strcmp(a, "--no-track") == 0) {
-            o->track = 0;
-            continue;
-        }
-        if (v == NULL) {
-            fprintf(stderr, "se23-sim: %s needs a value (or is unknown)\n", a);
-            return -1;
-        }
-        i++;
-        if (strcmp(a, "--scenario") == 0) {
-            o->scenario = traj_find(v);
-            bad = o->scenario < 0;
-        } else if (strcmp(a, "--duration") == 0) {
-            bad = harness_parse_double(v, &o->duration) || o->duration <= 0.0;
-        } else if (strcmp(a, "--imu-rate") == 0) {
-            bad = harness_parse_double(v, &o->imu_rate) || o->imu_rate < 100.0 ||
-                  o->imu_rate > 2000.0;
-        } else if (strcmp(a, "--imu") == 0) {
-            o->profile = harness_imu_profile_find(v);
-            bad = o->profile < 0;
-        } else if (strcmp(a, "--earth") == 0) {
-            o->earth = strcmp(v, "on") == 0;
-            bad = !o->earth && strcmp(v, "off") != 0;
-        } else if (strcmp(a, "--lat") == 0) {
-            bad = harness_parse_double(v, &o->lat_deg) || fabs(o->lat_deg) > 90.0;
-        } else if (strcmp(a, "--gnss-rate") == 0) {
-            bad = harness_parse_double(v, &o->gnss_rate) || o->gnss_rate < 0.0;
-        } else if (strcmp(a, "--gnss-sigma-p") == 0) {
-            bad = harness_parse_vec3(v, o->gnss_sp);
-        } else if (strcmp(a, "--gnss-sigma-v") == 0) {
-            bad = harness_parse_vec3(v, o->gnss_sv);
-        } else if (strcmp(a, "--truth-rate") == 0) {
-            bad = harness_parse_double(v, &o->truth_rate) || o->truth_rate <= 0.0;
-        } else if (strcmp(a, "--seed") == 0) {
-            bad = harness_parse_i64(v, &seed);
-            o->seed = seed;
-        } else if (strcmp(a, "--init-sigma") == 0) {
-            bad = harness_parse_vec3(v, o->init_sigma) || o->init_sigma[0] < 0.0 ||
-                  o->init_sigma[1] < 0.0 || o->init_sigma[2] < 0.0;
-        } else if (strcmp(a, "--url") == 0) {
-            o->url = v;
-        } else if (strcmp(a, "--speed") == 0) {
-            bad = harness_parse_double(v, &o->speed) || o->speed < 0.0;
-        } else {
-            fprintf(stderr, "se23-sim: unknown option %s\n", a);
-            return -1;
-        }
-        if (bad) {
-            fprintf(stderr, "se23-sim: bad value for %s: %s\n", a, v);
-            return -1;
-        }
+    if (harness_parse_opts("se23-sim", argc, argv, opts, (int)(sizeof opts / sizeof opts[0]),
+                           usage, NULL, NULL) != 0) {
+        return -1;
     }
     if (o->duration < 0.0) {
         o->duration = traj_default_duration((traj_scenario_t)o->scenario);
@@ -366,8 +321,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "se23-sim: cannot open LCM URL %s\n", o.url);
         return 1;
     }
-    signal(SIGINT, on_signal);
-    signal(SIGTERM, on_signal);
+    harness_catch_stop_signals();
 
     dt_ns = llround(1e9 / o.imu_rate);
     dt = (double)dt_ns * 1e-9;
@@ -389,7 +343,7 @@ int main(int argc, char **argv)
     publish_truth(lc, 0, 0, &x, err.b_g, err.b_a);
 
     wall0 = harness_now_ns();
-    for (k = 1; k <= n && !stop_flag; k++) {
+    for (k = 1; k <= n && !harness_stop_requested(); k++) {
         double w_true[3], f_true[3], b_g[3], b_a[3];
         ld_vec3_t w_ld, f_ld;
         se23lcm_imu_sample s;
@@ -430,5 +384,5 @@ int main(int argc, char **argv)
     }
     publish_info(lc, HARNESS_CH_SIM_END, &o, &env);
     lcm_destroy(lc);
-    return stop_flag ? 130 : 0;
+    return harness_stop_requested() ? 130 : 0;
 }
