@@ -277,9 +277,9 @@ static void test_kalman_null_arguments_return_err_null(void **state)
 /* ------------------------------------------------------------ the filter */
 
 #define KF_RUNS 100
-#define KF_DT 0.05
-#define KF_STEPS 400   /* 20 s */
-#define KF_GNSS_EVERY 10 /* 2 Hz */
+#define KF_DT 0.1
+#define KF_STEPS 200   /* 20 s */
+#define KF_GNSS_EVERY 5 /* 2 Hz */
 #define KF_GNSS_SD 0.3
 
 static const se23_imu_noise_t KF_NOISE = {SE23_R(2e-4), SE23_R(2e-3),
