@@ -45,7 +45,9 @@
  * (|P_ij - P_ji| <= tol s) and positive semidefinite within tolerance
  * (P + tol s I has a Cholesky factor), s = max_i |P_ii| and
  * tol = SE23_CFG_COV_TOL; otherwise SE23_ERR_NONFINITE, SE23_ERR_NOT_SYMMETRIC
- * or SE23_ERR_NOT_PSD, and nothing is written.
+ * or SE23_ERR_NOT_PSD, and nothing is written. Singular covariances (a known
+ * initial pose, Sigma = 0) are valid. A sample interval must satisfy
+ * 0 < dt <= SE23_CFG_DT_MAX, else SE23_ERR_DT (a NaN dt included).
  *
  * Functions index:
  *   se23_gauss_fk_apply, se23_gauss_fk, se23_gauss_fk_mul   F_k and products
