@@ -21,7 +21,10 @@
  * Proposition: R_j = G^R R_i dR, p_j = G^x + G^R (R_i dX + Delta t v'_i + p_i),
  * v_j = G^v + G^R (R_i dV + v'_i) - Omega x p_j, v'_i = v_i + Omega x p_i.
  * Prediction from a factor equals step-by-step propagation (se23_imu_step)
- * up to rounding.
+ * up to rounding. Delta V and Delta X grow as g t and g t^2/2 and cancel
+ * against Gamma' in the prediction: in the float build keep factors short
+ * (a 60 s factor loses ~2e-4 relative, crosscheck_nav; 0.1-0.5 s factors are
+ * the most accurate way to propagate in float, README).
  *
  * Extension. The covariance (9x9) and the bias Jacobian (9x6) of the Deltas
  * are meant to live in a wrapper that embeds se23_preint_t as its first
