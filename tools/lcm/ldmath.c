@@ -164,6 +164,28 @@ ld_mat3_t ld_jl(const ld_vec3_t *phi)
     return series(1.0L, a1, a2, phi);
 }
 
+ld_mat3_t ld_k_series(const ld_vec3_t *phi)
+{
+    ld_mat3_t W = ld_hat(phi), P = ld_identity(), K;
+    ld_t fact = 1.0L; /* n! */
+    int n, i, j;
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) {
+            K.m[i][j] = (i == j) ? 0.5L : 0.0L;
+        }
+    }
+    for (n = 1; n < 30; n++) {
+        P = ld_mul(&P, &W);
+        fact *= (ld_t)n;
+        for (i = 0; i < 3; i++) {
+            for (j = 0; j < 3; j++) {
+                K.m[i][j] += P.m[i][j] / (fact * (ld_t)(n + 2));
+            }
+        }
+    }
+    return K;
+}
+
 ld_mat3_t ld_euler(ld_t roll, ld_t pitch, ld_t yaw)
 {
     ld_t cr = cosl(roll), sr = sinl(roll);

@@ -37,6 +37,8 @@ ld_mat3_t ld_exp(const ld_vec3_t *phi);
 ld_vec3_t ld_log(const ld_mat3_t *R);
 /** Left Jacobian J(phi) = sum phi^^n/(n+1)!. */
 ld_mat3_t ld_jl(const ld_vec3_t *phi);
+/** K(phi) = sum phi^^n / (n! (n+2)) by direct summation (|phi| <= 1). */
+ld_mat3_t ld_k_series(const ld_vec3_t *phi);
 /** R = Rz(yaw) Ry(pitch) Rx(roll): body FRD -> NED. */
 ld_mat3_t ld_euler(ld_t roll, ld_t pitch, ld_t yaw);
 /** Inverse of a 3x3 matrix by cofactors (the caller ensures it is regular). */

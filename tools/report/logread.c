@@ -72,6 +72,11 @@ static void decode_event(const lcm_eventlog_event_t *ev, log_data_t *d)
             for (i = 0; i < 9; i++) {
                 ok = ok && m.cov[10 * i] >= 0.0 && isfinite(m.cov[10 * i]);
             }
+            se23lcm_preint_factor *slot =
+                push((void **)&d->preint, &d->n_preint_stored, &d->cap_preint, sizeof m);
+            if (slot) {
+                *slot = m;
+            }
             d->n_preint++;
             d->n_preint_bad += !ok;
             d->preint_samples += m.n_samples;
@@ -172,5 +177,6 @@ void log_free(log_data_t *d)
     free(d->truth);
     free(d->nav);
     free(d->gnss);
+    free(d->preint);
     memset(d, 0, sizeof *d);
 }

@@ -23,6 +23,8 @@ typedef struct {
     size_t n_nav, cap_nav;
     se23lcm_gnss_fix *gnss;
     size_t n_gnss, cap_gnss;
+    se23lcm_preint_factor *preint;
+    size_t n_preint_stored, cap_preint;
     se23lcm_sim_info info;
     int have_info;
     int64_t n_imu;          /**< SE23_IMU events seen */

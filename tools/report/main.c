@@ -18,6 +18,7 @@
 #include "../lcm/harness.h"
 #include "logread.h"
 #include "metrics.h"
+#include "preint_check.h"
 
 #define RAD2DEG (180.0 / 3.14159265358979323846)
 
@@ -29,6 +30,7 @@ typedef struct {
     double check_frac;     /* fraction of epochs within 3 sigma, per component */
     double check_nees_lo, check_nees_hi; /* band on mean NEES / dof */
     double check_max_pos;  /* final position error bound [m] (<= 0: none) */
+    double check_preint;   /* factor prediction error bound [m] (<= 0: none) */
     int n_logs;
     const char **logs;
 } rep_opts_t;
@@ -44,7 +46,9 @@ static void usage(FILE *f)
             "                      within 3 sigma in >= --check-frac of the epochs (0.9)\n"
             "                      and mean NEES/dof (9, and 15 with bias states) in\n"
             "                      [--nees-lo, --nees-hi] (0.3, 3)\n"
-            "  --max-pos-err M     exit 1 unless the final position error is <= M [m]\n");
+            "  --max-pos-err M     exit 1 unless the final position error is <= M [m]\n"
+            "  --max-preint-err M  exit 1 unless every preintegrated factor predicts the\n"
+            "                      truth at its end from the truth at its start within M [m]\n");
 }
 
 static int parse_args(int argc, char **argv, rep_opts_t *o)
@@ -59,6 +63,7 @@ static int parse_args(int argc, char **argv, rep_opts_t *o)
         {"--nees-lo", HOPT_DOUBLE, &o->check_nees_lo, 0.0, inf, NULL},
         {"--nees-hi", HOPT_DOUBLE, &o->check_nees_hi, 0.0, inf, NULL},
         {"--max-pos-err", HOPT_DOUBLE, &o->check_max_pos, 0.0, inf, NULL},
+        {"--max-preint-err", HOPT_DOUBLE, &o->check_preint, 0.0, inf, NULL},
     };
     memset(o, 0, sizeof *o);
     o->plot_script = "tools/report/plot.py";
@@ -326,8 +331,23 @@ int main(int argc, char **argv)
            (unsigned)last->status);
 
     if (d.n_preint > 0) {
+        preint_check_t pc;
+        preint_check(&d, &pc);
         printf("  preintegrated factors: %lld covering %lld IMU samples; %lld malformed\n",
                (long long)d.n_preint, (long long)d.preint_samples, (long long)d.n_preint_bad);
+        printf("  factor prediction from the truth (%ld factors): max error %.3g m, %.3g m/s, "
+               "%.3g rad\n",
+               pc.n_checked, pc.max_pos_err, pc.max_vel_err, pc.max_att_err);
+        if (o.check_preint > 0.0) {
+            int pass = pc.n_checked > 0 && pc.max_pos_err <= o.check_preint;
+            printf("%s: factor prediction error %.3g m, bound %.3g m\n",
+                   pass ? "PREINT CHECK PASSED" : "PREINT CHECK FAILED", pc.max_pos_err,
+                   o.check_preint);
+            ok = ok && pass;
+        }
+    } else if (o.check_preint > 0.0) {
+        printf("PREINT CHECK FAILED: no preintegrated factor in the logs\n");
+        ok = 0;
     }
     if (o.plots_dir != NULL) {
         char path[1024];
