@@ -83,7 +83,7 @@ int ins_init(ins_t *ins, const ins_init_t *init)
         }
     }
     if (se23_gauss_to_carried(&ins->model, &user, &carried) != SE23_OK) {
-        ins->c.filter_errors++;
+        ins->c.init_rejected++; /* invalid pose or covariance: state kept */
         return -1;
     }
     ins->g = carried;

@@ -62,6 +62,7 @@ typedef struct {
     int64_t imu_used, imu_nonfinite, imu_range, imu_duplicate, imu_out_of_order;
     int64_t imu_bad_time, imu_bad_dt, imu_missing, imu_early;
     int64_t decode_errors, gnss_used, gnss_rejected, time_resets, filter_errors;
+    int64_t init_rejected;
 } ins_counters_t;
 
 typedef struct {
@@ -138,7 +139,11 @@ typedef struct {
 /** Sets up the engine (no state yet). Returns 0, or -1 on a bad config. */
 int ins_setup(ins_t *ins, const ins_config_t *cfg);
 
-/** (Re)initialises the state. Returns 0, or -1 if the initial state is invalid. */
+/**
+ * (Re)initialises the state. Returns 0, or -1 if the initial state is
+ * invalid (non-finite, R not a rotation, P not a covariance): then counted in
+ * init_rejected and the current state is kept.
+ */
 int ins_init(ins_t *ins, const ins_init_t *init);
 
 /** One IMU sample (raw readings). Returns 1 if integrated, 0 if rejected. */

@@ -161,6 +161,7 @@ static void publish_nav(node_t *nd)
     m.n_gnss_rejected = c->gnss_rejected;
     m.n_time_resets = c->time_resets;
     m.n_filter_errors = c->filter_errors;
+    m.n_init_rejected = c->init_rejected;
     m.nis_last = out.nis_last;
     se23lcm_nav_state_publish(nd->out, HARNESS_CH_NAV, &m);
 }
@@ -274,8 +275,6 @@ static void on_init(const lcm_recv_buf_t *rb, const char *ch, void *user)
     memcpy(init.P, m.P, sizeof init.P);
     if (ins_init(&nd->ins, &init) == 0) {
         nd->publish_due = 1;
-    } else {
-        fprintf(stderr, "se23-ins: initial state refused\n");
     }
 }
 
@@ -316,6 +315,7 @@ static void summary(const node_t *nd, double cpu_s)
     printf("  gnss_rejected     %lld\n", (long long)c->gnss_rejected);
     printf("  time_resets       %lld\n", (long long)c->time_resets);
     printf("  filter_errors     %lld\n", (long long)c->filter_errors);
+    printf("  init_rejected     %lld\n", (long long)c->init_rejected);
     printf("  status            0x%02x\n", (unsigned)nd->ins.status);
     printf("  cpu_seconds       %.3f\n", cpu_s);
     printf("  samples_per_s     %.0f\n", cpu_s > 0.0 ? (double)c->imu_used / cpu_s : 0.0);

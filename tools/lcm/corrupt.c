@@ -18,6 +18,8 @@
  *   truncated IMU, garbage on SE23_IMU, a GNSS fix on SE23_IMU, truncated GNSS
  *                                                     -> decode_errors (4)
  *   a GNSS fix with NaN position, one with sigma < 0  -> gnss_rejected (2)
+ *   initial states: NaN in P, a non-rotation R, P not
+ *   positive semidefinite                             -> init_rejected (3), state kept
  *
  * usage: se23-corrupt IN.log OUT.log
  */
@@ -31,6 +33,7 @@
 #include "harness.h"
 #include "se23lcm_gnss_fix.h"
 #include "se23lcm_imu_sample.h"
+#include "se23lcm_nav_state.h"
 
 enum {
     K_NAN = 500,
@@ -48,6 +51,7 @@ enum {
     OUTAGE_CONFIRM = 3, /* INS_OUTAGE_CONFIRM of tools/ins/ins.h */
     K_BAD_GNSS = 3000,  /* invalid fixes after the first fix past this seq */
     K_GARBAGE = 3200,   /* undecodable messages after this sample */
+    K_BAD_INIT = 3300,  /* invalid initial states after this sample */
     K_LAST = 3400       /* samples the input must hold */
 };
 
@@ -55,7 +59,8 @@ typedef struct {
     lcm_eventlog_t *out;
     int64_t eventnum;
     int64_t n_imu_in, used, nonfinite, range, dup, ooo, bad_time, bad_dt, missing, early;
-    int64_t decode, gnss_rej, resets;
+    int64_t decode, gnss_rej, resets, init_rej;
+    int bad_init_done;
     se23lcm_imu_sample held; /* the first of a swapped pair */
     int64_t prev_t_ns;       /* time of the previous sample of the input */
     int have_held;
@@ -186,6 +191,27 @@ static void on_imu(ctx_t *c, int64_t ts, se23lcm_imu_sample m)
     }
 }
 
+/* Three invalid copies of the initial state init. */
+static void bad_inits(ctx_t *c, int64_t ts, const se23lcm_nav_state *init)
+{
+    unsigned char buf[4096];
+    se23lcm_nav_state m;
+    int len, k;
+    for (k = 0; k < 3; k++) {
+        m = *init;
+        if (k == 0) {
+            m.P[16 * 4] = NAN;
+        } else if (k == 1) {
+            m.R_nb[0] = 2.0; /* not a rotation */
+        } else {
+            m.P[16 * 7] = -1.0; /* negative variance */
+        }
+        len = se23lcm_nav_state_encode(buf, 0, (int)sizeof buf, &m);
+        write_raw(c, HARNESS_CH_INIT, ts, buf, len);
+    }
+    c->init_rej += 3;
+}
+
 static void on_gnss(ctx_t *c, int64_t ts, const lcm_eventlog_event_t *ev, int64_t last_seq)
 {
     se23lcm_gnss_fix g;
@@ -213,6 +239,8 @@ int main(int argc, char **argv)
     lcm_eventlog_event_t *ev;
     int64_t last_seq = 0;
     int early_done = 0;
+    se23lcm_nav_state init;
+    int have_init = 0;
     if (argc != 3) {
         fprintf(stderr, "usage: se23-corrupt IN.log OUT.log\n");
         return 2;
@@ -224,6 +252,13 @@ int main(int argc, char **argv)
         return 1;
     }
     while ((ev = lcm_eventlog_read_next_event(in)) != NULL) {
+        if (!have_init && strcmp(ev->channel, HARNESS_CH_INIT) == 0) {
+            have_init = se23lcm_nav_state_decode(ev->data, 0, ev->datalen, &init) >= 0;
+        }
+        if (have_init && !c.bad_init_done && last_seq > K_BAD_INIT) {
+            bad_inits(&c, ev->timestamp, &init);
+            c.bad_init_done = 1;
+        }
         if (!early_done && strcmp(ev->channel, HARNESS_CH_INIT) == 0) {
             se23lcm_imu_sample e; /* a sample before the initial state */
             memset(&e, 0, sizeof e);
@@ -269,5 +304,6 @@ int main(int argc, char **argv)
     printf("expect gnss_rejected %lld\n", (long long)c.gnss_rej);
     printf("expect time_resets %lld\n", (long long)c.resets);
     printf("expect filter_errors 0\n");
+    printf("expect init_rejected %lld\n", (long long)c.init_rej);
     return 0;
 }

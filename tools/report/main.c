@@ -324,10 +324,12 @@ int main(int argc, char **argv)
            (long long)last->n_imu_bad_time, (long long)last->n_imu_bad_dt,
            (long long)last->n_imu_missing, (long long)last->n_imu_early);
     printf("  GNSS fixes: used %lld, rejected %lld; messages not decoded: %lld (INS), %lld "
-           "(report); time resets %lld; library errors %lld; status 0x%02x\n",
+           "(report); time resets %lld; library errors %lld; initial states refused %lld; "
+           "status 0x%02x\n",
            (long long)last->n_gnss_used, (long long)last->n_gnss_rejected,
            (long long)last->n_decode_errors, (long long)d.n_decode_errors,
            (long long)last->n_time_resets, (long long)last->n_filter_errors,
+           (long long)last->n_init_rejected,
            (unsigned)last->status);
 
     if (d.n_preint > 0) {
