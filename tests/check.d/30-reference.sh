@@ -1,11 +1,17 @@
-# Eigen cross-checks (tests/reference): every crosscheck_* program of both
-# precision trees, one pass/fail each. Their accuracy tables are kept in
-# $LOGDIR/accuracy-<precision>-<program>.md and merged into
-# $LOGDIR/accuracy.md (the README's "Accuracy" section quotes them).
-# Each program runs a second time with every C result perturbed
-# (SE23_XC_PERTURB, relative, above every bound of that precision times the
-# largest condition factor used, ~3e3): that run passes only if EVERY row
-# then fails, i.e. it proves that each comparison can fail.
+# Eigen reference (tests/reference). One pass/fail per program:
+#  - selftest_*: the reference against itself by independent routes (it does
+#    not depend on the C precision: run from the double tree only);
+#  - crosscheck_*: the C library against the reference, both precision trees.
+#    Their accuracy tables are kept in $LOGDIR/accuracy-<precision>-<program>.md
+#    and merged into $LOGDIR/accuracy.md (quoted by the README's "Accuracy").
+#    Each crosscheck also runs with every C result perturbed (SE23_XC_PERTURB,
+#    relative, above every bound of that precision times the largest condition
+#    factor a row divides by, ~3e3): that run passes only if EVERY row then
+#    fails, i.e. it proves that each comparison can fail.
+for ref_bin in "$BUILD/cmake-double/tests/reference"/selftest_*; do
+    [ -x "$ref_bin" ] || continue
+    check "ref-$(basename "$ref_bin")" "$ref_bin"
+done
 for ref_prec in double float; do
     if [ "$ref_prec" = double ]; then ref_perturb=1e-8; else ref_perturb=1e-2; fi
     for ref_bin in "$BUILD/cmake-$ref_prec/tests/reference"/crosscheck_*; do

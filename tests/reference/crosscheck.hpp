@@ -412,18 +412,15 @@ class Report {
         const bool perturbed = perturbation() != 0;
         std::printf("%s, %s build (eps = %.3g)%s\n", program_.c_str(), kPrecision, kEps,
                     perturbed ? ", C results PERTURBED" : "");
-        std::printf("%-28s %-8s %7s %10s %8s %8s %6s  %-12s %s\n", "routine", "error", "samples",
+        std::printf("%-34s %-8s %7s %10s %8s %8s %6s  %-12s %s\n", "routine", "error", "samples",
                     "worst", "/eps", "bound", "over", "worst at t", "result");
         int failed = 0;
         for (const Row &r : rows_) {
             const bool ok = r.worst <= r.bound && r.bad_status == 0 && r.samples > 0;
             failed += ok ? 0 : 1;
-            char in_eps[16] = "-";  // a decision is right or wrong, not eps
-            if (r.norm != "decision") {
-                std::snprintf(in_eps, sizeof in_eps, "%.2f", std::min(r.worst / kEps, 99999.0));
-            }
-            std::printf("%-28s %-8s %7ld %10.3e %8s %8.1e %6ld  %-12.7Lg %s\n", r.name.c_str(),
-                        r.norm.c_str(), r.samples, r.worst, in_eps, r.bound, r.over,
+            const std::string in_eps = worst_in_eps(r);
+            std::printf("%-34s %-8s %7ld %10.3e %8s %8.1e %6ld  %-12.7Lg %s\n", r.name.c_str(),
+                        r.norm.c_str(), r.samples, r.worst, in_eps.c_str(), r.bound, r.over,
                         r.worst_theta, ok ? "ok" : "FAIL");
         }
         const int n = int(rows_.size());
@@ -437,6 +434,16 @@ class Report {
     }
 
   private:
+    /** The worst error in units of eps ("-" for decisions: right or wrong). */
+    static std::string worst_in_eps(const Row &r)
+    {
+        char buf[32] = "-";
+        if (r.norm != "decision") {
+            std::snprintf(buf, sizeof buf, "%.2f", std::min(r.worst / kEps, 1e9));
+        }
+        return buf;
+    }
+
     void write_markdown() const
     {
         if (path_.empty()) {
@@ -448,9 +455,9 @@ class Report {
             std::exit(2);
         }
         for (const Row &r : rows_) {
-            std::fprintf(f, "| %s | %s | %s | %ld | %.2e | %.2f | %.1e | %ld |\n",
-                         r.name.c_str(), kPrecision, r.norm.c_str(), r.samples, r.worst,
-                         r.worst / kEps, r.bound, r.over);
+            std::fprintf(f, "| %s | %s | %s | %ld | %.2e | %s | %.3g | %ld |\n", r.name.c_str(),
+                         kPrecision, r.norm.c_str(), r.samples, r.worst,
+                         worst_in_eps(r).c_str(), r.bound, r.over);
         }
         std::fclose(f);
     }
