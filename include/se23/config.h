@@ -17,6 +17,9 @@
  *                        rotation. Default 1e-5 (float) / 1e-9 (double).
  *   SE23_CFG_DT_MAX      Largest IMU sample interval [s] the propagation
  *                        accepts. Default 1.0 s.
+ *   SE23_CFG_COV_TOL     Relative tolerance of the covariance checks
+ *                        (symmetry and positive semidefiniteness, gauss.h).
+ *                        Default 1e-5 (float) / 1e-9 (double).
  */
 #ifndef SE23_CONFIG_H
 #define SE23_CONFIG_H
@@ -47,6 +50,14 @@
 
 #ifndef SE23_CFG_DT_MAX
 #define SE23_CFG_DT_MAX 1.0
+#endif
+
+#ifndef SE23_CFG_COV_TOL
+#if SE23_CFG_DOUBLE
+#define SE23_CFG_COV_TOL 1e-9
+#else
+#define SE23_CFG_COV_TOL 1e-5f
+#endif
 #endif
 
 #endif /* SE23_CONFIG_H */

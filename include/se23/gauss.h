@@ -72,17 +72,6 @@
 extern "C" {
 #endif
 
-/**
- * Relative tolerance of the covariance checks (file comment). Default 1e-9
- * (double) / 1e-5 (float). Belongs with the other options of config.h.
- */
-#ifndef SE23_CFG_COV_TOL
-#if SE23_CFG_DOUBLE
-#define SE23_CFG_COV_TOL 1e-9
-#else
-#define SE23_CFG_COV_TOL 1e-5f
-#endif
-#endif
 
 /** Largest error dimension and its two allowed values. */
 #define SE23_GAUSS_NMAX 15
