@@ -9,6 +9,46 @@ ld_mat3_t ld_identity(void)
     return I;
 }
 
+ld_mat3_t ld_mat3_from(const double m[9])
+{
+    ld_mat3_t R;
+    int i, j;
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) {
+            R.m[i][j] = m[3 * i + j];
+        }
+    }
+    return R;
+}
+
+ld_vec3_t ld_vec3_from(const double x[3])
+{
+    ld_vec3_t v;
+    int i;
+    for (i = 0; i < 3; i++) {
+        v.v[i] = x[i];
+    }
+    return v;
+}
+
+void ld_mat3_to(const ld_mat3_t *A, double m[9])
+{
+    int i, j;
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) {
+            m[3 * i + j] = (double)A->m[i][j];
+        }
+    }
+}
+
+void ld_vec3_to(const ld_vec3_t *a, double x[3])
+{
+    int i;
+    for (i = 0; i < 3; i++) {
+        x[i] = (double)a->v[i];
+    }
+}
+
 ld_mat3_t ld_mul(const ld_mat3_t *A, const ld_mat3_t *B)
 {
     ld_mat3_t C;

@@ -20,6 +20,10 @@ typedef struct {
 } ld_mat3_t;
 
 ld_mat3_t ld_identity(void);
+ld_mat3_t ld_mat3_from(const double m[9]);      /* from row-major doubles */
+ld_vec3_t ld_vec3_from(const double x[3]);
+void ld_mat3_to(const ld_mat3_t *A, double m[9]); /* to row-major doubles */
+void ld_vec3_to(const ld_vec3_t *a, double x[3]);
 ld_mat3_t ld_mul(const ld_mat3_t *A, const ld_mat3_t *B);     /* A B */
 ld_mat3_t ld_mul_tn(const ld_mat3_t *A, const ld_mat3_t *B);  /* A^T B */
 ld_mat3_t ld_transpose(const ld_mat3_t *A);

@@ -6,18 +6,6 @@
 
 #include "../lcm/ldmath.h"
 
-static ld_mat3_t mat_in(const double *m)
-{
-    ld_mat3_t R;
-    int i, j;
-    for (i = 0; i < 3; i++) {
-        for (j = 0; j < 3; j++) {
-            R.m[i][j] = m[3 * i + j];
-        }
-    }
-    return R;
-}
-
 /* e^T P^-1 e for the leading n x n block of the 15x15 P; NaN if singular. */
 static double nees(const double *P, const double *e, int n)
 {
@@ -74,7 +62,7 @@ static void nav_sigma(const ld_mat3_t *R, const double *P, int b, double out[3])
 
 void metrics_epoch(const se23lcm_truth *tr, const se23lcm_nav_state *nav, epoch_t *e)
 {
-    ld_mat3_t R = mat_in(tr->R_nb), Rh = mat_in(nav->R_nb);
+    ld_mat3_t R = ld_mat3_from(tr->R_nb), Rh = ld_mat3_from(nav->R_nb);
     ld_mat3_t E = ld_mul_tn(&Rh, &R), En, Jinv;
     ld_vec3_t phi = ld_log(&E), dth, dv_b, dp_b, nu, rho;
     ld_mat3_t Rt = ld_transpose(&Rh);

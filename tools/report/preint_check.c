@@ -3,36 +3,18 @@
 
 #include "../lcm/ldmath.h"
 
-static ld_mat3_t mat_in(const double *m)
-{
-    ld_mat3_t R;
-    int i, j;
-    for (i = 0; i < 3; i++) {
-        for (j = 0; j < 3; j++) {
-            R.m[i][j] = m[3 * i + j];
-        }
-    }
-    return R;
-}
-
-static ld_vec3_t vec_in(const double *x)
-{
-    ld_vec3_t v = {{x[0], x[1], x[2]}};
-    return v;
-}
-
 /* One factor f from truth a (at f.t0) to truth b (at f.t1): updates r. */
 static void check_one(const se23lcm_sim_info *info, const se23lcm_preint_factor *f,
                       const se23lcm_truth *a, const se23lcm_truth *b, preint_check_t *r)
 {
     ld_t dt = (ld_t)f->dt_s;
-    ld_vec3_t g = vec_in(info->g_n), w = vec_in(info->w_ie_n);
+    ld_vec3_t g = ld_vec3_from(info->g_n), w = ld_vec3_from(info->w_ie_n);
     ld_vec3_t mw = ld_scale(&w, -dt);
     ld_mat3_t GR = ld_exp(&mw), GJ = ld_jl(&mw), GK = ld_k_series(&mw);
     ld_vec3_t Gv = ld_mul_v(&GJ, &g), Gx = ld_mul_v(&GK, &g);
-    ld_mat3_t R0 = mat_in(a->R_nb), dR = mat_in(f->dR), R0dR, R1, E;
-    ld_vec3_t p0 = vec_in(a->p_n), v0 = vec_in(a->v_n), wxp = ld_cross(&w, &p0);
-    ld_vec3_t vc0 = ld_add(&v0, &wxp), dv = vec_in(f->dv), dp = vec_in(f->dp);
+    ld_mat3_t R0 = ld_mat3_from(a->R_nb), dR = ld_mat3_from(f->dR), R0dR, R1, E;
+    ld_vec3_t p0 = ld_vec3_from(a->p_n), v0 = ld_vec3_from(a->v_n), wxp = ld_cross(&w, &p0);
+    ld_vec3_t vc0 = ld_add(&v0, &wxp), dv = ld_vec3_from(f->dv), dp = ld_vec3_from(f->dp);
     ld_vec3_t Rdv = ld_mul_v(&R0, &dv), Rdp = ld_mul_v(&R0, &dp), vA, pA, vc1, p1, v1, e, t;
     int i;
     Gv = ld_scale(&Gv, dt);
@@ -49,18 +31,18 @@ static void check_one(const se23lcm_sim_info *info, const se23lcm_preint_factor 
     p1 = ld_add(&p1, &Gx);
     wxp = ld_cross(&w, &p1);
     v1 = ld_sub(&vc1, &wxp);
-    t = vec_in(b->p_n);
+    t = ld_vec3_from(b->p_n);
     e = ld_sub(&p1, &t);
     if ((double)ld_norm(&e) > r->max_pos_err) {
         r->max_pos_err = (double)ld_norm(&e);
     }
-    t = vec_in(b->v_n);
+    t = ld_vec3_from(b->v_n);
     e = ld_sub(&v1, &t);
     if ((double)ld_norm(&e) > r->max_vel_err) {
         r->max_vel_err = (double)ld_norm(&e);
     }
     {
-        ld_mat3_t Rb = mat_in(b->R_nb);
+        ld_mat3_t Rb = ld_mat3_from(b->R_nb);
         E = ld_mul_tn(&R1, &Rb);
     }
     e = ld_log(&E);

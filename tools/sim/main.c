@@ -137,24 +137,6 @@ static int parse_args(int argc, char **argv, sim_opts_t *o)
     return 0;
 }
 
-static void mat_out(const ld_mat3_t *R, double out[9])
-{
-    int i, j;
-    for (i = 0; i < 3; i++) {
-        for (j = 0; j < 3; j++) {
-            out[3 * i + j] = (double)R->m[i][j];
-        }
-    }
-}
-
-static void vec_out(const ld_vec3_t *x, double out[3])
-{
-    int i;
-    for (i = 0; i < 3; i++) {
-        out[i] = (double)x->v[i];
-    }
-}
-
 static void publish_truth(lcm_t *lc, int64_t t_ns, int64_t seq, const truth_state_t *x,
                           const double b_g[3], const double b_a[3])
 {
@@ -162,9 +144,9 @@ static void publish_truth(lcm_t *lc, int64_t t_ns, int64_t seq, const truth_stat
     memset(&m, 0, sizeof m);
     m.t_ns = t_ns;
     m.seq = seq;
-    mat_out(&x->R, m.R_nb);
-    vec_out(&x->v, m.v_n);
-    vec_out(&x->p, m.p_n);
+    ld_mat3_to(&x->R, m.R_nb);
+    ld_vec3_to(&x->v, m.v_n);
+    ld_vec3_to(&x->p, m.p_n);
     memcpy(m.b_g, b_g, sizeof m.b_g);
     memcpy(m.b_a, b_a, sizeof m.b_a);
     se23lcm_truth_publish(lc, HARNESS_CH_TRUTH, &m);
@@ -206,7 +188,7 @@ static void publish_init(lcm_t *lc, const sim_opts_t *o, const truth_state_t *x,
     memset(&m, 0, sizeof m);
     m.t_ns = 0;
     m.seq = 0;
-    mat_out(&R, m.R_nb);
+    ld_mat3_to(&R, m.R_nb);
     for (i = 0; i < 3; i++) {
         m.v_n[i] = (double)(x->v.v[i] - dv.v[i]);
         m.p_n[i] = (double)(x->p.v[i] - dp.v[i]);
@@ -229,8 +211,8 @@ static void publish_info(lcm_t *lc, const char *ch, const sim_opts_t *o, const t
     m.gnss_rate_hz = o->gnss_rate;
     m.duration_s = o->duration;
     m.latitude_rad = o->lat_deg * (3.14159265358979323846 / 180.0);
-    vec_out(&env->g_n, m.g_n);
-    vec_out(&env->w_ie_n, m.w_ie_n);
+    ld_vec3_to(&env->g_n, m.g_n);
+    ld_vec3_to(&env->w_ie_n, m.w_ie_n);
     se23lcm_sim_info_publish(lc, ch, &m);
 }
 
@@ -271,8 +253,8 @@ static void true_inputs(const sim_opts_t *o, const truth_env_t *env, const truth
         w = ld_add(&w, &e_R);
         f = ld_add(&f, &corr_b);
     }
-    vec_out(&w, w_out);
-    vec_out(&f, f_out);
+    ld_vec3_to(&w, w_out);
+    ld_vec3_to(&f, f_out);
 }
 
 static void publish_gnss(lcm_t *lc, int64_t t_ns, int64_t seq, const sim_opts_t *o,
