@@ -146,13 +146,20 @@ static se23_real_t orthogonality_error(const se23_mat3_t *R)
     return worst;
 }
 
-/* Shared by check and normalize: finite, det > 0, drift within tol. */
-static se23_status_t check_rotation(const se23_mat3_t *R, se23_real_t tol)
+/* Finite and |R^T R - I| within tol; then the determinant: within tol of 1
+ * for a rotation (rejects reflections and uniform scaling), or merely
+ * positive for what normalize can repair (its iteration converges for any
+ * such matrix with drift below 0.1). */
+static se23_status_t check_rotation(const se23_mat3_t *R, se23_real_t tol,
+                                    int repairable)
 {
     if (!se23_all_finite(&R->m[0][0], 9)) {
         return SE23_ERR_NONFINITE;
     }
-    if (!(orthogonality_error(R) <= tol) || !(se23_m3_det(R) > SE23_R(0))) {
+    const se23_real_t det = se23_m3_det(R);
+    const int det_ok = repairable ? (det > SE23_R(0))
+                                  : (se23_fabs(det - SE23_R(1)) <= tol);
+    if (!(orthogonality_error(R) <= tol) || !det_ok) {
         return SE23_ERR_NOT_ROTATION;
     }
     return SE23_OK;
@@ -161,14 +168,14 @@ static se23_status_t check_rotation(const se23_mat3_t *R, se23_real_t tol)
 se23_status_t se23_so3_check(const se23_mat3_t *R)
 {
     SE23_CHECK_NOT_NULL(R);
-    return check_rotation(R, SE23_R(SE23_CFG_ROT_TOL));
+    return check_rotation(R, SE23_R(SE23_CFG_ROT_TOL), 0);
 }
 
 se23_status_t se23_so3_log(const se23_mat3_t *R, se23_vec3_t *phi)
 {
     SE23_CHECK_NOT_NULL(R);
     SE23_CHECK_NOT_NULL(phi);
-    se23_status_t st = check_rotation(R, SE23_R(SE23_CFG_ROT_TOL));
+    se23_status_t st = check_rotation(R, SE23_R(SE23_CFG_ROT_TOL), 0);
     if (st != SE23_OK) {
         return st;
     }
@@ -215,7 +222,7 @@ se23_status_t se23_so3_normalize(const se23_mat3_t *R, se23_mat3_t *Rn)
 {
     SE23_CHECK_NOT_NULL(R);
     SE23_CHECK_NOT_NULL(Rn);
-    se23_status_t st = check_rotation(R, NORMALIZE_MAX_DRIFT);
+    se23_status_t st = check_rotation(R, NORMALIZE_MAX_DRIFT, 1);
     if (st != SE23_OK) {
         return st;
     }

@@ -2,8 +2,9 @@
  *
  * Thresholds. The closed forms lose about eps * 12/theta^2 (relative) to
  * cancellation; the Taylor series with SERIES_TERMS terms truncates at about
- * theta^18/19!. Double: Taylor below theta = 1 (truncation < 1e-17, closed
- * form cancellation above it < 3e-15). Float: Taylor below theta = 2, where
+ * theta^18/19!. Double: Taylor below theta = 1 (truncation < 1e-17; just
+ * above it the closed forms are within 16 eps, 15.6 eps measured for c4 at
+ * theta = 1.09, far inside the 1e-12 the double build promises). Float: Taylor below theta = 2, where
  * the closed forms are within a few FLT_EPSILON.
  */
 #include "so3_series.h"

@@ -324,6 +324,23 @@ static void test_so3_log_rejects_non_rotation(void **state)
     assert_near(phi.v[1], 7, 0, 0);
 }
 
+/* (1 + s) I with s = 0.45 tol: R^T R - I = 0.9 tol passes, but det - 1 =
+ * 1.35 tol must not. */
+static void test_so3_check_rejects_uniform_scaling(void **state)
+{
+    (void)state;
+    const double s = 1.0 + 0.45 * (double)SE23_CFG_ROT_TOL;
+    se23_mat3_t M = {{{(se23_real_t)s, 0, 0}, {0, (se23_real_t)s, 0}, {0, 0, (se23_real_t)s}}};
+    assert_int_equal(se23_so3_check(&M), SE23_ERR_NOT_ROTATION);
+    se23_vec3_t phi = {{7, 7, 7}};
+    assert_int_equal(se23_so3_log(&M, &phi), SE23_ERR_NOT_ROTATION);
+    assert_near(phi.v[0], 7, 0, 0);
+    /* normalize repairs it */
+    se23_mat3_t Rn;
+    assert_int_equal(se23_so3_normalize(&M, &Rn), SE23_OK);
+    assert_int_equal(se23_so3_check(&Rn), SE23_OK);
+}
+
 static void test_so3_jl_inv_rejects_near_two_pi(void **state)
 {
     (void)state;
@@ -372,6 +389,7 @@ int main(void)
         cmocka_unit_test(test_so3_normalize_refuses_far_from_rotation),
         cmocka_unit_test(test_so3_nonfinite_inputs_leave_output_untouched),
         cmocka_unit_test(test_so3_log_rejects_non_rotation),
+        cmocka_unit_test(test_so3_check_rejects_uniform_scaling),
         cmocka_unit_test(test_so3_jl_inv_rejects_near_two_pi),
         cmocka_unit_test(test_so3_null_arguments_return_err_null),
     };
