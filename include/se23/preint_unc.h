@@ -1,0 +1,172 @@
+/**
+ * @file preint_unc.h
+ * @brief A preintegrated IMU factor with its uncertainty and its bias
+ *        Jacobians: the 9x9 covariance of the Deltas (paper section 3), the
+ *        9x6 bias Jacobian in exponential coordinates (paper section 4,
+ *        eq. biascor) and first-order bias correction without
+ *        re-integration, with the classical correction of Forster et al.
+ *        (T-RO 2017) alongside for comparison.
+ *
+ * Sensor and bias convention (gauss.h, the paper's section 3.3): the IMU
+ * reads w_meas = w - b_g - eta_g, f_meas = f - b_a - eta_a. The factor is
+ * integrated at a bias estimate bbar, i.e. from the corrected inputs
+ * w = w_meas + bbar_g, f = f_meas + bbar_a (body frame, rad/s and m/s^2).
+ *
+ * Uncertainty (paper eq. error:rep1, eq. riccati). The true Deltas are
+ * Delta_true = Delta exp(xi), xi ~ N(0, P), xi = (phi, nu, rho) in the body
+ * frame at t_i. Preintegration is the flat-Earth step with Gamma = I
+ * (preint.h), so xi propagates like a state error (gauss.h):
+ *   xi+ = F_k xi + B_k eta,  P+ = F_k P F_k^T + B_k N B_k^T,
+ *   F_k = Ad_{Upsilon_k^-1} F,  P_0 = 0,
+ * with se23_gauss_input_jac, se23_gauss_input_noise and
+ * se23_gauss_cov_propagate: one implementation of F_k and B_k serves the
+ * filter and the factor. A state distribution predicted through the factor
+ * is Sigma_j = F_D Sigma_i F_D^T + P with F_D = Ad_{Delta^-1} F_{Delta t}
+ * (se23_gauss_fk_apply with U = Delta, dt = Delta t), the same as
+ * propagating Sigma_i sample by sample.
+ *
+ * Bias Jacobian in exponential coordinates (paper eq. bias:discrep,
+ * eq. biascor; DESIGN.md "Bias Jacobian"). For a new estimate
+ * bhat = bbar + db, Delta(bhat) = Delta(bbar) exp(d) with d = J db + O(db^2),
+ *   J_{k+1} = F_k J_k + B_k,  J_0 = 0   (9x6, columns (db_g, db_a), [s]),
+ * B_k the exact input matrix (SE23_INPUT_JAC_EXACT: J is the derivative of
+ * log(Delta(bbar)^-1 Delta(bbar + db)) at db = 0, to rounding) or the
+ * paper's basic dt I_{9,6} (SE23_INPUT_JAC_BASIC: J is first order in dt).
+ * The kind chosen at reset also weights the noise, B_k N B_k^T.
+ * Bias correction without re-integration:
+ *   Delta(bhat) ~ Delta(bbar) exp(J (bhat - bbar)).
+ *
+ * Classical first-order correction (Forster et al., IEEE T-RO 2017: the
+ * first-order bias update of the preintegrated measurements and the
+ * incremental Jacobians of its appendix), with this library's sign of the
+ * bias (theirs is subtracted from the corrected reading, so every Jacobian
+ * changes sign), accumulated over the same samples; right-hand sides hold
+ * the values before sample k:
+ *   dR/dbg+ = DR_k^T dR/dbg + Jr(w dt) dt       (DR_k = exp(w dt ^))
+ *   dV/dbg+ = dV/dbg - DeltaR f^ dR/dbg dt,     dV/dba+ = dV/dba + DeltaR dt
+ *   dX/dbg+ = dX/dbg + dV/dbg dt - DeltaR f^ dR/dbg dt^2/2
+ *   dX/dba+ = dX/dba + dV/dba dt + DeltaR dt^2/2
+ * and the correction
+ *   DeltaR(bhat) ~ DeltaR exp(dR/dbg db_g),
+ *   DeltaV(bhat) ~ DeltaV + dV/dbg db_g + dV/dba db_a,  DeltaX likewise.
+ * These are the Jacobians of Euler-integrated Deltas; applied to the exact
+ * Deltas of this library they stay first-order accurate.
+ *
+ * Functions index:
+ *   se23_preint_unc_reset           empty factor at a bias estimate
+ *   se23_preint_unc_add             one raw sample: Deltas, P, J, classical
+ *   se23_preint_unc_check           validate a factor
+ *   se23_preint_unc_correct         Delta(bbar) exp(J db), paper eq. biascor
+ *   se23_preint_unc_correct_classic Forster et al.'s first-order correction
+ *
+ * Every function returns a status and writes its outputs (or changes the
+ * factor) only on SE23_OK.
+ */
+#ifndef SE23_PREINT_UNC_H
+#define SE23_PREINT_UNC_H
+
+#include "se23/gauss.h"
+#include "se23/imu.h"
+#include "se23/preint.h"
+#include "se23/types.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Bias Jacobians of the classical (Forster et al. 2017) correction. */
+typedef struct {
+    se23_mat3_t dR_dbg; /**< right-perturbation of Delta R per gyro bias [s] */
+    se23_mat3_t dV_dbg; /**< Delta V per gyro bias [m/s per rad/s] */
+    se23_mat3_t dV_dba; /**< Delta V per accel bias [s] */
+    se23_mat3_t dX_dbg; /**< Delta X per gyro bias [m per rad/s] */
+    se23_mat3_t dX_dba; /**< Delta X per accel bias [s^2] */
+} se23_preint_classic_t;
+
+/**
+ * A preintegrated factor with uncertainty. se23_preint_t comes first, so a
+ * pointer to this struct's f serves every function of preint.h (prediction).
+ * Start with se23_preint_unc_reset; change only through this header.
+ */
+typedef struct {
+    se23_preint_t f;            /**< Deltas at the bias estimate, Delta t, sample count */
+    se23_vec3_t b_g;            /**< gyro bias estimate bbar_g [rad/s] (added to w_meas) */
+    se23_vec3_t b_a;            /**< accel bias estimate bbar_a [m/s^2] (added to f_meas) */
+    se23_input_jac_kind_t kind; /**< input matrix of J and of the noise */
+    se23_mat9_t P;              /**< covariance of xi, Delta_true = Delta exp(xi) */
+    se23_mat9x6_t J;            /**< bias Jacobian: d = J db [s] */
+    se23_preint_classic_t cl;   /**< classical Jacobians, for comparison */
+} se23_preint_unc_t;
+
+/**
+ * fu = the empty factor at the bias estimate (b_g, b_a): Deltas (I, 0, 0),
+ * Delta t = 0, P = 0, J = 0, classical Jacobians 0 (J_0 = 0, DESIGN.md).
+ * @param b_g  gyro bias estimate [rad/s]
+ * @param b_a  accel bias estimate [m/s^2]
+ * @param kind input matrix for J and the noise (gauss.h)
+ * @return SE23_ERR_NONFINITE (bias), SE23_ERR_DOMAIN (unknown kind).
+ */
+se23_status_t se23_preint_unc_reset(const se23_vec3_t *b_g,
+                                    const se23_vec3_t *b_a,
+                                    se23_input_jac_kind_t kind,
+                                    se23_preint_unc_t *fu);
+
+/**
+ * Adds one raw sample s (sensor readings; corrected with the factor's bias
+ * estimate): the Deltas by se23_preint_add_increment with the exact
+ * increment of the corrected sample; P+ = F_k P F_k^T + B_k N B_k^T
+ * (paper eq. riccati, gauss.h noise model, bias walks unused); J+ = F_k J +
+ * B_k (paper eq. biascor); the classical Jacobians (file comment).
+ * @param noise white-noise densities of the IMU (gauss.h)
+ * @return SE23_ERR_NONFINITE (s, noise, fu), SE23_ERR_DT (s->dt outside
+ *         (0, SE23_CFG_DT_MAX], fu->f.dt < 0), SE23_ERR_DOMAIN (negative
+ *         density, unknown kind), SE23_ERR_NOT_ROTATION (Delta R),
+ *         SE23_ERR_NOT_SYMMETRIC or SE23_ERR_NOT_PSD (P); fu is unchanged
+ *         on error.
+ */
+se23_status_t se23_preint_unc_add(se23_preint_unc_t *fu,
+                                  const se23_imu_sample_t *s,
+                                  const se23_imu_noise_t *noise);
+
+/**
+ * Checks a factor: kind known, biases, J and the classical Jacobians
+ * finite, Deltas an extended pose (finite, Delta R in SO(3)), Delta t finite
+ * and >= 0, P a valid covariance (gauss.h, "Validation").
+ * @return SE23_OK, SE23_ERR_DOMAIN, SE23_ERR_NONFINITE,
+ *         SE23_ERR_NOT_ROTATION, SE23_ERR_DT, SE23_ERR_NOT_SYMMETRIC or
+ *         SE23_ERR_NOT_PSD.
+ */
+se23_status_t se23_preint_unc_check(const se23_preint_unc_t *fu);
+
+/**
+ * out = the factor corrected to the new bias estimate bhat = (b_g, b_a)
+ * without re-integration, in exponential coordinates (paper eq.
+ * bias:discrep, eq. biascor):
+ *   out.delta = fu.f.delta exp(J (bhat - bbar)),
+ * out.dt and out.n copied. Error O(|bhat - bbar|^2).
+ * @param b_g new gyro bias estimate [rad/s]
+ * @param b_a new accel bias estimate [m/s^2]
+ * @return the statuses of se23_preint_unc_check, SE23_ERR_NONFINITE (bias).
+ */
+se23_status_t se23_preint_unc_correct(const se23_preint_unc_t *fu,
+                                      const se23_vec3_t *b_g,
+                                      const se23_vec3_t *b_a,
+                                      se23_preint_t *out);
+
+/**
+ * out = the classical first-order correction of Forster et al. 2017
+ * (file comment) to the new bias estimate (b_g, b_a):
+ * Delta R exp(dR/dbg db_g), Delta V + dV/dbg db_g + dV/dba db_a,
+ * Delta X + dX/dbg db_g + dX/dba db_a; out.dt and out.n copied.
+ * @return as se23_preint_unc_correct.
+ */
+se23_status_t se23_preint_unc_correct_classic(const se23_preint_unc_t *fu,
+                                              const se23_vec3_t *b_g,
+                                              const se23_vec3_t *b_a,
+                                              se23_preint_t *out);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* SE23_PREINT_UNC_H */

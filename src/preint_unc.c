@@ -1,0 +1,186 @@
+/* Preintegrated factor with covariance, bias Jacobian and first-order bias
+ * correction; see se23/preint_unc.h. F_k, B_k and the noise come from
+ * gauss.h (one implementation for the filter and the factor). */
+#include "se23/preint_unc.h"
+
+#include "argcheck.h"
+#include "cov.h"
+#include "linalg.h"
+#include "preint_classic.h"
+#include "se23/se23.h"
+#include "se23_math.h"
+
+static int kind_known(se23_input_jac_kind_t kind)
+{
+    return kind == SE23_INPUT_JAC_EXACT || kind == SE23_INPUT_JAC_BASIC;
+}
+
+se23_status_t se23_preint_unc_reset(const se23_vec3_t *b_g,
+                                    const se23_vec3_t *b_a,
+                                    se23_input_jac_kind_t kind,
+                                    se23_preint_unc_t *fu)
+{
+    SE23_CHECK_NOT_NULL(b_g);
+    SE23_CHECK_NOT_NULL(b_a);
+    SE23_CHECK_NOT_NULL(fu);
+    if (!se23_all_finite(b_g->v, 3) || !se23_all_finite(b_a->v, 3)) {
+        return SE23_ERR_NONFINITE;
+    }
+    if (!kind_known(kind)) {
+        return SE23_ERR_DOMAIN;
+    }
+    const se23_mat3_t zero3 = {{{SE23_R(0)}}};
+    se23_preint_reset(&fu->f);
+    fu->b_g = *b_g;
+    fu->b_a = *b_a;
+    fu->kind = kind;
+    for (int i = 0; i < 81; ++i) {
+        fu->P.m[i] = SE23_R(0);
+    }
+    for (int i = 0; i < 54; ++i) {
+        fu->J.m[i] = SE23_R(0);
+    }
+    fu->cl.dR_dbg = zero3;
+    fu->cl.dV_dbg = zero3;
+    fu->cl.dV_dba = zero3;
+    fu->cl.dX_dbg = zero3;
+    fu->cl.dX_dba = zero3;
+    return SE23_OK;
+}
+
+se23_status_t se23_preint_unc_check(const se23_preint_unc_t *fu)
+{
+    SE23_CHECK_NOT_NULL(fu);
+    if (!kind_known(fu->kind)) {
+        return SE23_ERR_DOMAIN;
+    }
+    const se23_preint_classic_t *c = &fu->cl;
+    if (!se23_all_finite(fu->b_g.v, 3) || !se23_all_finite(fu->b_a.v, 3) ||
+        !se23_all_finite(fu->J.m, 54) || !se23_all_finite(&c->dR_dbg.m[0][0], 9) ||
+        !se23_all_finite(&c->dV_dbg.m[0][0], 9) ||
+        !se23_all_finite(&c->dV_dba.m[0][0], 9) ||
+        !se23_all_finite(&c->dX_dbg.m[0][0], 9) ||
+        !se23_all_finite(&c->dX_dba.m[0][0], 9) || !se23_is_finite(fu->f.dt)) {
+        return SE23_ERR_NONFINITE;
+    }
+    se23_status_t st = se23_pose_check(&fu->f.delta);
+    if (st != SE23_OK) {
+        return st;
+    }
+    if (fu->f.dt < SE23_R(0)) {
+        return SE23_ERR_DT;
+    }
+    return se23_cov_check(fu->P.m, 9, 9);
+}
+
+se23_status_t se23_preint_unc_add(se23_preint_unc_t *fu,
+                                  const se23_imu_sample_t *s,
+                                  const se23_imu_noise_t *noise)
+{
+    SE23_CHECK_NOT_NULL(fu);
+    SE23_CHECK_NOT_NULL(s);
+    SE23_CHECK_NOT_NULL(noise);
+    se23_status_t st = se23_preint_unc_check(fu);
+    if (st != SE23_OK) {
+        return st;
+    }
+    se23_imu_sample_t c = *s; /* corrected inputs */
+    se23_v3_axpy(&s->w_ib_b, SE23_R(1), &fu->b_g, &c.w_ib_b);
+    se23_v3_axpy(&s->f_b, SE23_R(1), &fu->b_a, &c.f_b);
+    se23_pose_t U;
+    se23_mat9x6_t B;
+    se23_mat9_t Q, P;
+    st = se23_imu_increment(&c, &U);
+    if (st == SE23_OK) {
+        st = se23_gauss_input_jac(fu->kind, &c.w_ib_b, &c.f_b, c.dt, &B);
+    }
+    if (st == SE23_OK) {
+        st = se23_gauss_input_noise(&B, noise, c.dt, &Q);
+    }
+    if (st == SE23_OK) {
+        st = se23_gauss_cov_propagate(&fu->P, &U, c.dt, &Q, &P);
+    }
+    if (st != SE23_OK) {
+        return st;
+    }
+    /* Nothing below can fail: update in place. */
+    fu->P = P;
+    se23_gauss_fk_mul(&U, c.dt, &fu->J, &fu->J);
+    for (int i = 0; i < 54; ++i) {
+        fu->J.m[i] += B.m[i];
+    }
+    se23_preint_classic_step(&fu->cl, &fu->f.delta.R, &U.R, &c.w_ib_b, &c.f_b,
+                             c.dt);
+    se23_preint_add_increment(&fu->f, &U, c.dt);
+    return SE23_OK;
+}
+
+/* d = J db, the discrepancy of paper eq. bias:discrep to first order. */
+static void bias_discrepancy(const se23_mat9x6_t *J, const se23_vec3_t *dbg,
+                             const se23_vec3_t *dba, se23_tangent_t *d)
+{
+    const se23_real_t db[6] = {dbg->v[0], dbg->v[1], dbg->v[2],
+                               dba->v[0], dba->v[1], dba->v[2]};
+    for (int i = 0; i < 9; ++i) {
+        se23_real_t sum = SE23_R(0);
+        for (int j = 0; j < 6; ++j) {
+            sum += J->m[6 * i + j] * db[j];
+        }
+        d->v[i] = sum;
+    }
+}
+
+typedef enum { EXPONENTIAL, CLASSIC } method_t;
+
+/* out = fu's Deltas corrected to bhat = (b_g, b_a), in exponential
+ * coordinates or with Forster et al.'s Jacobians. */
+static se23_status_t correct(const se23_preint_unc_t *fu,
+                             const se23_vec3_t *b_g, const se23_vec3_t *b_a,
+                             method_t method, se23_preint_t *out)
+{
+    SE23_CHECK_NOT_NULL(fu);
+    SE23_CHECK_NOT_NULL(b_g);
+    SE23_CHECK_NOT_NULL(b_a);
+    SE23_CHECK_NOT_NULL(out);
+    se23_status_t st = se23_preint_unc_check(fu);
+    if (st != SE23_OK) {
+        return st;
+    }
+    if (!se23_all_finite(b_g->v, 3) || !se23_all_finite(b_a->v, 3)) {
+        return SE23_ERR_NONFINITE;
+    }
+    se23_vec3_t dbg, dba;
+    se23_v3_axpy(b_g, SE23_R(-1), &fu->b_g, &dbg);
+    se23_v3_axpy(b_a, SE23_R(-1), &fu->b_a, &dba);
+    se23_preint_t r = fu->f;
+    if (method == CLASSIC) {
+        se23_preint_classic_apply(&fu->cl, &fu->f.delta, &dbg, &dba, &r.delta);
+    } else {
+        se23_tangent_t d;
+        se23_pose_t E;
+        bias_discrepancy(&fu->J, &dbg, &dba, &d);
+        st = se23_exp(&d, &E); /* NONFINITE if J db overflowed */
+        if (st != SE23_OK) {
+            return st;
+        }
+        se23_compose(&fu->f.delta, &E, &r.delta);
+    }
+    *out = r;
+    return SE23_OK;
+}
+
+se23_status_t se23_preint_unc_correct(const se23_preint_unc_t *fu,
+                                      const se23_vec3_t *b_g,
+                                      const se23_vec3_t *b_a,
+                                      se23_preint_t *out)
+{
+    return correct(fu, b_g, b_a, EXPONENTIAL, out);
+}
+
+se23_status_t se23_preint_unc_correct_classic(const se23_preint_unc_t *fu,
+                                              const se23_vec3_t *b_g,
+                                              const se23_vec3_t *b_a,
+                                              se23_preint_t *out)
+{
+    return correct(fu, b_g, b_a, CLASSIC, out);
+}
