@@ -17,7 +17,9 @@ TGT_CFLAGS := $(WARN) -O2 -g -ffunction-sections -fdata-sections \
 TGT_LDFLAGS := -nostartfiles --specs=nano.specs --specs=rdimon.specs \
                -Lport/cortex-m -Wl,--gc-sections
 TGT_PORT_OBJS = $(TGT)/$(1)/port/startup.o $(TGT)/$(1)/port/se23_port.o
-TGT_TV_OBJS = $(TGT)/$(1)/tv_runner.o $(TGT)/$(1)/tv_adapters.o $(TGT)/$(1)/tv_custom.o
+TGT_TV_OBJS = $(TGT)/$(1)/tv_runner.o $(call TGT_TV_LIB_OBJS,$(1))
+# The adapters of every routine, shared by the test and benchmark images.
+TGT_TV_LIB_OBJS = $(patsubst %,$(TGT)/$(1)/%.o,tv_adapters tv_custom tv_custom_gauss)
 
 # Reference vectors: tools/target/gen_vectors (host, C++) from the Eigen
 # reference library that the CMake test tree builds (tests/reference).
@@ -159,7 +161,7 @@ $(TGT)/$(1)/bench/%.o: tools/target/%.c $(wildcard tools/target/*.h) tests/targe
 	mkdir -p $$(@D)
 	$(ARM_CC) $(2) $(TGT_CFLAGS) -Itests/target -Itools/target -DSE23_CFG_DOUBLE=$(3) -c $$< -o $$@
 $(TGT)/$(1)/bench.elf: $(patsubst %,$(TGT)/$(1)/bench/%.o,bench_main bench_marks bench_steps) \
-                       $(TGT)/$(1)/tv_adapters.o $(TGT)/$(1)/tv_custom.o $(TGT)/$(1)/tv_data.o \
+                       $(call TGT_TV_LIB_OBJS,$(1)) $(TGT)/$(1)/tv_data.o \
                        $(call TGT_PORT_OBJS,$(1)) $(BUILD)/lib-$(1)/libse23.a port/cortex-m/sections.ld
 	$(ARM_CC) $(2) $(TGT_LDFLAGS) -Tport/cortex-m/$(TGT_BOARD_$(1)).ld \
 	    $$(filter %.o %.a,$$^) -lm -o $$@

@@ -6,6 +6,10 @@
 check port-posix make -s test-port-posix BUILD="$BUILD"
 check port-template cc -std=c99 -Wall -Wextra -Wpedantic -Werror -Iport \
     -fsyntax-only port/template/se23_port.c
+# Every public function of include/se23/*.h has reference vectors (a row of
+# tests/target/tv_list.h and a generator in tools/target/gen_*.cpp).
+check target-vectors-cover-api /usr/bin/python3 tools/target/se23_api.py --coverage \
+    tests/target/tv_list.h
 check target-images make -s -j1 target BUILD="$BUILD"
 for v in m4f-float:mps2-an386 m7-double:mps2-an500; do
     for img in port_selftest tv_test; do

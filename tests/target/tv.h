@@ -25,6 +25,17 @@
 /** Reals of a se23_preint_t in a row: delta (pose), dt, n. */
 #define TV_PREINT_REALS (TV_REALS(se23_pose_t) + 2)
 
+/** Reals of a se23_gauss_t in a row: T, b_g, b_a, n, P (15 x 15). */
+#define TV_GAUSS_REALS (TV_REALS(se23_pose_t) + 3 + 3 + 1 + 15 * 15)
+
+/** Reals of a se23_meas_t in a row: m, z, H (9 x 15), R (9 x 9). */
+#define TV_MEAS_REALS                                                          \
+    (1 + SE23_MEAS_MMAX + SE23_MEAS_MMAX * SE23_GAUSS_NMAX + SE23_MEAS_MMAX * SE23_MEAS_MMAX)
+
+/** Reals of a se23_preint_unc_t in a row: f (TV_PREINT_REALS), b_g, b_a,
+ *  kind, P (9 x 9), J (9 x 6), the five classical 3 x 3 Jacobians. */
+#define TV_PREINT_UNC_REALS (TV_PREINT_REALS + 3 + 3 + 1 + 81 + 54 + 5 * 9)
+
 /** Literals of the generated tables. */
 #define TV_R(x) ((se23_real_t)(x))
 
@@ -35,6 +46,7 @@ typedef struct {
     int n_out;                 /**< reals per output vector */
     const se23_real_t *in;     /**< n_vec x n_in, or NULL if n_in = 0 */
     const se23_real_t *out;    /**< n_vec x n_out expected (zeros where status != OK) */
+    const float *scale;        /**< n_vec x n_out error scales (tv_runner.c) */
     const signed char *status; /**< n_vec expected se23_status_t values */
 } tv_data_t;
 

@@ -238,3 +238,108 @@ int tv_call_se23_preint_predict_carried(void)
     return (int)se23_preint_predict_carried(&p.model, &p.f, &p.T, &p.out);
 }
 void tv_store_se23_preint_predict_carried(se23_real_t *out) { give(&out, &p.out, sizeof p.out); }
+
+/* ---- preint_unc.h: se23_preint_unc_t travels as TV_PREINT_UNC_REALS reals
+ * (f, b_g, b_a, kind, P, J, classical Jacobians) -------------------------- */
+
+#define KIND_SENTINEL ((se23_input_jac_kind_t)-7)
+
+static struct {
+    se23_preint_unc_t fu, before;
+    se23_imu_sample_t s;
+    se23_imu_noise_t noise;
+    se23_vec3_t b_g, b_a;
+    se23_input_jac_kind_t kind;
+    se23_preint_t out;
+} u;
+
+static void take_unc(const se23_real_t **in, se23_preint_unc_t *fu)
+{
+    take_preint(in, &fu->f);
+    take(in, &fu->b_g, sizeof fu->b_g);
+    take(in, &fu->b_a, sizeof fu->b_a);
+    fu->kind = (se23_input_jac_kind_t)(int)take1(in);
+    take(in, &fu->P, sizeof fu->P);
+    take(in, &fu->J, sizeof fu->J);
+    take(in, &fu->cl, sizeof fu->cl);
+}
+static void give_unc(se23_real_t *out, const se23_preint_unc_t *fu)
+{
+    give_preint(out, &fu->f);
+    out += TV_PREINT_REALS;
+    give(&out, &fu->b_g, sizeof fu->b_g);
+    give(&out, &fu->b_a, sizeof fu->b_a);
+    *out++ = fu->kind == KIND_SENTINEL ? TV_SENTINEL : (se23_real_t)fu->kind;
+    give(&out, &fu->P, sizeof fu->P);
+    give(&out, &fu->J, sizeof fu->J);
+    give(&out, &fu->cl, sizeof fu->cl);
+}
+static void fill_unc(se23_preint_unc_t *fu)
+{
+    fill_preint(&fu->f);
+    tv_fill_sentinel(&fu->b_g, sizeof fu->b_g);
+    tv_fill_sentinel(&fu->b_a, sizeof fu->b_a);
+    fu->kind = KIND_SENTINEL;
+    tv_fill_sentinel(&fu->P, sizeof fu->P);
+    tv_fill_sentinel(&fu->J, sizeof fu->J);
+    tv_fill_sentinel(&fu->cl, sizeof fu->cl);
+}
+
+void tv_load_se23_preint_unc_reset(const se23_real_t *in)
+{
+    take(&in, &u.b_g, sizeof u.b_g);
+    take(&in, &u.b_a, sizeof u.b_a);
+    u.kind = (se23_input_jac_kind_t)(int)take1(&in);
+    fill_unc(&u.fu);
+}
+int tv_call_se23_preint_unc_reset(void)
+{
+    return (int)se23_preint_unc_reset(&u.b_g, &u.b_a, u.kind, &u.fu);
+}
+void tv_store_se23_preint_unc_reset(se23_real_t *out) { give_unc(out, &u.fu); }
+
+/* In-place update: on error the factor must be unchanged; store reports the
+ * sentinel unless it changed (as for se23_preint_add). */
+void tv_load_se23_preint_unc_add(const se23_real_t *in)
+{
+    take_unc(&in, &u.fu);
+    take(&in, &u.s, sizeof u.s);
+    take(&in, &u.noise, sizeof u.noise);
+    u.before = u.fu;
+}
+int tv_call_se23_preint_unc_add(void) { return (int)se23_preint_unc_add(&u.fu, &u.s, &u.noise); }
+void tv_store_se23_preint_unc_add(se23_real_t *out)
+{
+    se23_preint_unc_t fu = u.fu;
+    if (memcmp(&fu, &u.before, sizeof fu) == 0) {
+        fill_unc(&fu);
+    }
+    give_unc(out, &fu);
+}
+
+void tv_load_se23_preint_unc_check(const se23_real_t *in) { take_unc(&in, &u.fu); }
+int tv_call_se23_preint_unc_check(void) { return (int)se23_preint_unc_check(&u.fu); }
+void tv_store_se23_preint_unc_check(se23_real_t *out) { (void)out; }
+
+void tv_load_se23_preint_unc_correct(const se23_real_t *in)
+{
+    take_unc(&in, &u.fu);
+    take(&in, &u.b_g, sizeof u.b_g);
+    take(&in, &u.b_a, sizeof u.b_a);
+    fill_preint(&u.out);
+}
+int tv_call_se23_preint_unc_correct(void)
+{
+    return (int)se23_preint_unc_correct(&u.fu, &u.b_g, &u.b_a, &u.out);
+}
+void tv_store_se23_preint_unc_correct(se23_real_t *out) { give_preint(out, &u.out); }
+
+void tv_load_se23_preint_unc_correct_classic(const se23_real_t *in)
+{
+    tv_load_se23_preint_unc_correct(in);
+}
+int tv_call_se23_preint_unc_correct_classic(void)
+{
+    return (int)se23_preint_unc_correct_classic(&u.fu, &u.b_g, &u.b_a, &u.out);
+}
+void tv_store_se23_preint_unc_correct_classic(se23_real_t *out) { give_preint(out, &u.out); }

@@ -16,13 +16,17 @@
  *   TV_C1(fn, A, tol)          se23_status_t fn(const A *)  (a check)
  *   TV_CUSTOM(fn, n_in, n_out, tol)  anything else: write tv_call_<fn> in
  *                              tests/target/tv_custom.c
- * tol: outputs must satisfy |got - expected| <= tol * eps * (1 + max|expected|)
- * (eps of the build's precision, max over the output row).
+ * tol: outputs must satisfy |got - expected| <= tol * eps * scale (eps of
+ * the build's precision; scale per output real from the generator: the
+ * magnitude of its block, see tools/target/gen_common.hpp).
  * Routines tested on the target without vectors (tv_runner.c): se23_status_str.
  */
 #include "se23/earth.h"
+#include "se23/gauss.h"
 #include "se23/imu.h"
+#include "se23/kalman.h"
 #include "se23/preint.h"
+#include "se23/preint_unc.h"
 #include "se23/se23.h"
 #include "se23/so3.h"
 
@@ -83,3 +87,41 @@ TV_CUSTOM(se23_preint_predict,
 TV_CUSTOM(se23_preint_predict_carried,
           TV_REALS(se23_earth_model_t) + TV_PREINT_REALS + TV_REALS(se23_pose_t),
           TV_REALS(se23_pose_t), 16)
+
+/* gauss.h (se23_gauss_t travels as T, b_g, b_a, n, P: TV_GAUSS_REALS reals;
+ * enums as reals) */
+#define TV_FK_IN (TV_REALS(se23_pose_t) + 1)
+TV_CUSTOM(se23_gauss_fk_apply, TV_FK_IN + 9, 9, 16)
+TV_CUSTOM(se23_gauss_fk, TV_FK_IN, 81, 16)
+TV_CUSTOM(se23_gauss_fk_mul, TV_FK_IN + 54, 54, 16)
+TV_CUSTOM(se23_gauss_input_jac, 8, 54, 16)
+TV_CUSTOM(se23_gauss_input_noise, 54 + TV_REALS(se23_imu_noise_t) + 1, 81, 16)
+TV_CUSTOM(se23_gauss_cov_propagate, 81 + TV_REALS(se23_pose_t) + 1 + 81, 81, 16)
+TV_CUSTOM(se23_gauss_check, TV_GAUSS_REALS, 0, 0)
+TV_CUSTOM(se23_gauss_propagate,
+          TV_GAUSS_REALS + TV_REALS(se23_pose_t) + 54 + TV_REALS(se23_imu_noise_t) + 1,
+          TV_GAUSS_REALS, 16)
+TV_CUSTOM(se23_gauss_predict,
+          TV_REALS(se23_earth_model_t) + TV_GAUSS_REALS + TV_REALS(se23_imu_sample_t) +
+              TV_REALS(se23_imu_noise_t) + 1,
+          TV_GAUSS_REALS, 16)
+TV_CUSTOM(se23_gauss_from_carried, TV_REALS(se23_earth_model_t) + TV_GAUSS_REALS,
+          TV_GAUSS_REALS, 16)
+TV_CUSTOM(se23_gauss_to_carried, TV_REALS(se23_earth_model_t) + TV_GAUSS_REALS,
+          TV_GAUSS_REALS, 16)
+#undef TV_FK_IN
+
+/* kalman.h (se23_meas_t travels as m, z, H, R: TV_MEAS_REALS reals) */
+TV_CUSTOM(se23_meas_pos_nav, TV_REALS(se23_pose_t) + 6 + 9, TV_MEAS_REALS, 16)
+TV_CUSTOM(se23_meas_vel_nav, TV_REALS(se23_pose_t) + 3 + 9, TV_MEAS_REALS, 16)
+TV_CUSTOM(se23_meas_vel_body, TV_REALS(se23_pose_t) + 3 + 9, TV_MEAS_REALS, 16)
+TV_CUSTOM(se23_kalman_update, TV_GAUSS_REALS + TV_MEAS_REALS, TV_GAUSS_REALS + 1, 32)
+
+/* preint_unc.h (se23_preint_unc_t travels as TV_PREINT_UNC_REALS reals) */
+TV_CUSTOM(se23_preint_unc_reset, 7, TV_PREINT_UNC_REALS, 0)
+TV_CUSTOM(se23_preint_unc_add,
+          TV_PREINT_UNC_REALS + TV_REALS(se23_imu_sample_t) + TV_REALS(se23_imu_noise_t),
+          TV_PREINT_UNC_REALS, 16)
+TV_CUSTOM(se23_preint_unc_check, TV_PREINT_UNC_REALS, 0, 0)
+TV_CUSTOM(se23_preint_unc_correct, TV_PREINT_UNC_REALS + 6, TV_PREINT_REALS, 16)
+TV_CUSTOM(se23_preint_unc_correct_classic, TV_PREINT_UNC_REALS + 6, TV_PREINT_REALS, 16)

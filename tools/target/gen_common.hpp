@@ -157,13 +157,98 @@ inline bool is_rotation(const Mat3L &R, const Ctx &c)
 
 // ---- generators -----------------------------------------------------------
 
+// Error scale of every output real: the target accepts |got - expected| <=
+// tol * eps * scale. Expected values are compared with the magnitude of the
+// block they belong to (a rotation with its rotation, a position with its
+// position, a covariance entry with sqrt(P_ii P_jj)), so that a small block
+// next to a large one is still checked to its own precision.
+using Scale = std::function<Row(const Row &out)>;
+
 struct Gen {
     int n_edge; // rows before the random ones (edge and error cases)
     // k-th input row (before rounding)
     std::function<Row(Ctx &, int k)> input;
     // status (se23_status_t) and outputs for an input row
     std::function<int(const Ctx &, const Row &in, Row &out)> expect;
+    // error scales of an output row; empty: the largest |expected| of the row
+    Scale scale = nullptr;
 };
+
+inline LD max_abs(const Row &r, size_t from, size_t n)
+{
+    LD m = 0;
+    for (size_t i = from; i < from + n; ++i) m = std::max(m, std::fabs(r[i]));
+    return m;
+}
+// Contiguous blocks of the given lengths, each scaled by its largest entry.
+inline Scale scale_blocks(std::vector<int> lens)
+{
+    return [lens](const Row &out) {
+        Row s;
+        size_t at = 0;
+        for (int n : lens) {
+            const LD m = max_abs(out, at, size_t(n));
+            s.insert(s.end(), size_t(n), m);
+            at += size_t(n);
+        }
+        return s;
+    };
+}
+// A rows x cols row-major matrix in b x b blocks, each scaled by its largest entry.
+inline Scale scale_mat_blocks(int rows, int cols, int b)
+{
+    return [rows, cols, b](const Row &out) {
+        Row s(out.size(), 0);
+        for (int bi = 0; bi < rows; bi += b) {
+            for (int bj = 0; bj < cols; bj += b) {
+                LD m = 0;
+                for (int i = bi; i < bi + b; ++i)
+                    for (int j = bj; j < bj + b; ++j) m = std::max(m, std::fabs(out[size_t(i * cols + j)]));
+                for (int i = bi; i < bi + b; ++i)
+                    for (int j = bj; j < bj + b; ++j) s[size_t(i * cols + j)] = m;
+            }
+        }
+        return s;
+    };
+}
+// An n x n covariance, row-major: entry (i, j) scaled by sqrt(P_ii P_jj).
+inline Scale scale_cov(int n)
+{
+    return [n](const Row &out) {
+        Row s(out.size(), 0);
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j)
+                s[size_t(i * n + j)] = std::sqrt(std::fabs(out[size_t(i * n + i)] * out[size_t(j * n + j)]));
+        return s;
+    };
+}
+// Consecutive segments (length, scale of the segment).
+inline Scale scale_concat(std::vector<std::pair<int, Scale>> parts)
+{
+    return [parts](const Row &out) {
+        Row s;
+        size_t at = 0;
+        for (const auto &p : parts) {
+            const Row seg(out.begin() + long(at), out.begin() + long(at) + p.first);
+            const Row ss = p.second(seg);
+            s.insert(s.end(), ss.begin(), ss.end());
+            at += size_t(p.first);
+        }
+        return s;
+    };
+}
+// A block whose error is absolute (of the order of its inputs, about 1): the
+// rotation vector of a logarithm, whatever its size.
+inline Scale scale_at_least_1()
+{
+    return [](const Row &out) {
+        return Row(out.size(), std::max(LD(1), max_abs(out, 0, out.size())));
+    };
+}
+inline Scale scale_pose() { return scale_blocks({9, 3, 3}); }
+inline Scale scale_tangent() { return scale_blocks({3, 3, 3}); }
+// se23_earth_model_t: g_n, w_ie_n, dt, dt_max, gamma (R, v, p)
+inline Scale scale_model() { return scale_blocks({3, 3, 1, 1, 9, 3, 3}); }
 
 inline int n_angles() { return int(edge_angles().size()); }
 
@@ -171,6 +256,9 @@ inline int n_angles() { return int(edge_angles().size()); }
 using Gens = std::map<std::string, Gen>;
 void add_lie(Gens &g); // so3.h, se23.h (gen_lie.cpp)
 void add_nav(Gens &g); // earth.h, imu.h, preint.h (gen_nav.cpp)
+void add_gauss(Gens &g);  // gauss.h (gen_gauss.cpp)
+void add_kalman(Gens &g); // kalman.h (gen_gauss.cpp)
+void add_preint_unc(Gens &g); // preint_unc.h (gen_preint_unc.cpp)
 
 } // namespace gen
 

@@ -306,6 +306,16 @@ void add_lie(Gens &g)
                                 Rd rd{in};
                                 return rot_status(c, rd.pose().block<3, 3>(0, 0), in);
                             }};
+    for (const char *n : {"se23_identity", "se23_compose", "se23_inverse", "se23_exp", "se23_from_mat5"}) {
+        g[n].scale = scale_pose();
+    }
+    // log: the rotation vector is as accurate as R's entries (absolute), not
+    // relative to its own size near the identity.
+    g["se23_so3_log"].scale = scale_at_least_1();
+    g["se23_log"].scale = scale_concat({{3, scale_at_least_1()}, {3, scale_blocks({3})}, {3, scale_blocks({3})}});
+    g["se23_vee"].scale = scale_tangent();
+    g["se23_adjoint"].scale = scale_mat_blocks(9, 9, 3);
+    g["se23_adjoint_inv"].scale = scale_mat_blocks(9, 9, 3);
 }
 
 } // namespace gen

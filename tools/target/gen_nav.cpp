@@ -462,6 +462,17 @@ void add_nav(Gens &g)
     };
     g["se23_preint_predict"] = predict(0);
     g["se23_preint_predict_carried"] = predict(1);
+    for (const char *n : {"se23_earth_gamma", "se23_imu_increment", "se23_imu_increment_euler",
+                          "se23_imu_transition", "se23_imu_step", "se23_imu_carried_from_user",
+                          "se23_imu_user_from_carried", "se23_preint_predict",
+                          "se23_preint_predict_carried"}) {
+        g[n].scale = scale_pose();
+    }
+    g["se23_earth_model_init"].scale = scale_model();
+    g["se23_earth_model_init_wgs84"].scale = scale_model();
+    for (const char *n : {"se23_preint_reset", "se23_preint_add", "se23_preint_add_increment"}) {
+        g[n].scale = scale_blocks({9, 3, 3, 1, 1});
+    }
 }
 
 } // namespace gen

@@ -66,10 +66,21 @@ void print_values(const char *name, const char *suffix, const std::vector<LD> &v
     std::printf("};\n");
 }
 
+// Error scales, 4 significant digits are plenty: float in both builds.
+void print_scales(const char *name, const std::vector<LD> &v)
+{
+    std::printf("static const float %s_scale[] = {\n", name);
+    for (size_t i = 0; i < v.size(); ++i) {
+        std::printf("    %.4ef,", double(v[i]));
+        if ((i + 1) % 6 == 0 || i + 1 == v.size()) std::printf("\n");
+    }
+    std::printf("};\n");
+}
+
 void emit(Ctx &c, const ListRow &lr, const Gen &g, const std::string &corrupt)
 {
     const int n_vec = g.n_edge + kRandom;
-    std::vector<LD> ins, outs;
+    std::vector<LD> ins, outs, scales;
     std::string st;
     bool corrupted = false;
     for (int k = 0; k < n_vec; ++k) {
@@ -87,8 +98,14 @@ void emit(Ctx &c, const ListRow &lr, const Gen &g, const std::string &corrupt)
             out[0] += LD(1e-3) * (1 + std::fabs(out[0]));
             corrupted = true;
         }
+        Row sc = s != SE23_OK ? Row(out.size(), 0)
+                 : g.scale ? g.scale(out) : Row(out.size(), max_abs(out, 0, out.size()));
+        if (sc.size() != out.size()) {
+            throw std::runtime_error(std::string(lr.name) + ": scale row size differs from the output");
+        }
         ins.insert(ins.end(), in.begin(), in.end());
         outs.insert(outs.end(), out.begin(), out.end());
+        scales.insert(scales.end(), sc.begin(), sc.end());
         st += "    " + std::to_string(s) + ",\n";
     }
     if (corrupt == lr.name && !corrupted) {
@@ -97,11 +114,16 @@ void emit(Ctx &c, const ListRow &lr, const Gen &g, const std::string &corrupt)
     std::printf("\n/* %s: %d vectors (%d edge/error cases, %d random) */\n", lr.name, n_vec,
                 g.n_edge, kRandom);
     if (!ins.empty()) print_values(lr.name, "in", ins, lr.n_in < 3 ? 1 : 3);
-    if (!outs.empty()) print_values(lr.name, "out", outs, 3);
+    if (!outs.empty()) {
+        print_values(lr.name, "out", outs, 3);
+        print_scales(lr.name, scales);
+    }
     std::printf("static const signed char %s_st[] = {\n%s};\n", lr.name, st.c_str());
-    std::printf("const tv_data_t tv_data_%s = {%d, %d, %d, %s, %s, %s_st};\n", lr.name, n_vec,
-                lr.n_in, lr.n_out, ins.empty() ? "NULL" : (std::string(lr.name) + "_in").c_str(),
-                outs.empty() ? "NULL" : (std::string(lr.name) + "_out").c_str(), lr.name);
+    const std::string name = lr.name;
+    std::printf("const tv_data_t tv_data_%s = {%d, %d, %d, %s, %s, %s, %s_st};\n", lr.name, n_vec,
+                lr.n_in, lr.n_out, ins.empty() ? "NULL" : (name + "_in").c_str(),
+                outs.empty() ? "NULL" : (name + "_out").c_str(),
+                outs.empty() ? "NULL" : (name + "_scale").c_str(), lr.name);
 }
 
 } // namespace
@@ -120,6 +142,9 @@ int main(int argc, char **argv)
         Gens g;
         add_lie(g);
         add_nav(g);
+        add_gauss(g);
+        add_kalman(g);
+        add_preint_unc(g);
         const auto &rows = list_rows();
         for (const auto &kv : g) {
             bool listed = false;

@@ -1,7 +1,10 @@
 """The public functions of se23: every function declared in include/se23/*.h.
 
-Shared by the target gates (stack budget, vector coverage). Run as a script
-to print the list: /usr/bin/python3 tools/target/se23_api.py [include/se23]
+Shared by the target gates (stack budget, vector coverage).
+  se23_api.py [include/se23]               print the list
+  se23_api.py --coverage tests/target/tv_list.h [include/se23]
+      fail unless every public function has a row in tv_list.h or is named
+      in its "tested on the target without vectors" note.
 """
 import glob
 import os
@@ -29,6 +32,28 @@ def public_functions(include_dir="include/se23"):
     return sorted(found.items())
 
 
-if __name__ == "__main__":
-    for name, header in public_functions(*(sys.argv[1:2] or ["include/se23"])):
+def covered(tv_list):
+    """Functions with a row in tv_list.h, plus those its note names."""
+    with open(tv_list, encoding="utf-8") as f:
+        text = f.read()
+    rows = set(re.findall(r"^TV_\w+\(\s*(se23_\w+)", text, re.M))
+    note = re.search(r"without vectors[^:]*:([^.]*)\.", text)
+    return rows | (set(re.findall(r"se23_\w+", note.group(1))) if note else set())
+
+
+def main(argv):
+    if argv[:1] == ["--coverage"]:
+        have = covered(argv[1])
+        missing = [(n, h) for n, h in public_functions(*(argv[2:3] or ["include/se23"]))
+                   if n not in have]
+        for n, h in missing:
+            print(f"{n} ({h}): no reference vectors in {argv[1]}")
+        print(f"{len(have)} covered, {len(missing)} missing")
+        return 1 if missing else 0
+    for name, header in public_functions(*(argv[:1] or ["include/se23"])):
         print(f"{name}\t{header}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
