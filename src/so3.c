@@ -27,108 +27,92 @@ void se23_so3_vee(const se23_mat3_t *W, se23_vec3_t *phi)
     *phi = out;
 }
 
-/* theta = |phi|, or a status if phi is not finite. */
-static se23_status_t angle_of(const se23_vec3_t *phi, se23_real_t *theta)
+/* The series functions of so3.h, all of the form a0 I + a1 W + a2 W^2. */
+typedef enum {
+    SERIES_EXP,    /* I + c1 W + c2 W^2 */
+    SERIES_JL,     /* I + c2 W + c3 W^2 */
+    SERIES_JR,     /* J_l(-phi) = I - c2 W + c3 W^2 */
+    SERIES_JL_INV, /* I - W/2 + e W^2 */
+    SERIES_H,      /* I/2 + c3 W + c4 W^2 */
+    SERIES_K       /* I/2 + k1 W + k2 W^2 */
+} series_t;
+
+/* out = the series `kind` at phi, after the checks every one of them needs. */
+static se23_status_t eval_series(series_t kind, const se23_vec3_t *phi,
+                                 se23_mat3_t *out)
 {
+    SE23_CHECK_NOT_NULL(phi);
+    SE23_CHECK_NOT_NULL(out);
     if (!se23_all_finite(phi->v, 3)) {
         return SE23_ERR_NONFINITE;
     }
-    *theta = se23_sqrt(se23_v3_dot(phi, phi));
+    const se23_real_t theta = se23_sqrt(se23_v3_dot(phi, phi));
+    se23_so3_coeffs_t c;
+    se23_real_t a0 = SE23_R(1);
+    se23_real_t a1;
+    se23_real_t a2;
+    switch (kind) {
+    case SERIES_JL_INV:
+        if (theta >= SE23_R(2) * SE23_PI - JL_INV_MARGIN) {
+            return SE23_ERR_DOMAIN;
+        }
+        a1 = SE23_R(-0.5);
+        a2 = se23_so3_jl_inv_coeff(theta);
+        break;
+    case SERIES_K:
+        a0 = SE23_R(0.5);
+        se23_so3_k_coeffs(theta, &a1, &a2);
+        break;
+    case SERIES_EXP:
+        se23_so3_coeffs(theta, &c);
+        a1 = c.c1;
+        a2 = c.c2;
+        break;
+    case SERIES_JL:
+    case SERIES_JR:
+        se23_so3_coeffs(theta, &c);
+        a1 = (kind == SERIES_JL) ? c.c2 : -c.c2;
+        a2 = c.c3;
+        break;
+    default: /* SERIES_H */
+        se23_so3_coeffs(theta, &c);
+        a0 = SE23_R(0.5);
+        a1 = c.c3;
+        a2 = c.c4;
+        break;
+    }
+    se23_m3_series(a0, a1, a2, phi, out);
     return SE23_OK;
 }
 
 se23_status_t se23_so3_exp(const se23_vec3_t *phi, se23_mat3_t *R)
 {
-    SE23_CHECK_NOT_NULL(phi);
-    SE23_CHECK_NOT_NULL(R);
-    se23_real_t theta;
-    se23_status_t st = angle_of(phi, &theta);
-    if (st != SE23_OK) {
-        return st;
-    }
-    se23_so3_coeffs_t c;
-    se23_so3_coeffs(theta, &c);
-    se23_m3_series(SE23_R(1), c.c1, c.c2, phi, R);
-    return SE23_OK;
+    return eval_series(SERIES_EXP, phi, R);
 }
 
 se23_status_t se23_so3_jl(const se23_vec3_t *phi, se23_mat3_t *J)
 {
-    SE23_CHECK_NOT_NULL(phi);
-    SE23_CHECK_NOT_NULL(J);
-    se23_real_t theta;
-    se23_status_t st = angle_of(phi, &theta);
-    if (st != SE23_OK) {
-        return st;
-    }
-    se23_so3_coeffs_t c;
-    se23_so3_coeffs(theta, &c);
-    se23_m3_series(SE23_R(1), c.c2, c.c3, phi, J);
-    return SE23_OK;
+    return eval_series(SERIES_JL, phi, J);
 }
 
 se23_status_t se23_so3_jr(const se23_vec3_t *phi, se23_mat3_t *J)
 {
-    SE23_CHECK_NOT_NULL(phi);
-    SE23_CHECK_NOT_NULL(J);
-    se23_real_t theta;
-    se23_status_t st = angle_of(phi, &theta);
-    if (st != SE23_OK) {
-        return st;
-    }
-    se23_so3_coeffs_t c;
-    se23_so3_coeffs(theta, &c);
-    /* J_r(phi) = J_l(-phi): the odd term changes sign. */
-    se23_m3_series(SE23_R(1), -c.c2, c.c3, phi, J);
-    return SE23_OK;
+    return eval_series(SERIES_JR, phi, J);
 }
 
 se23_status_t se23_so3_jl_inv(const se23_vec3_t *phi, se23_mat3_t *Jinv)
 {
-    SE23_CHECK_NOT_NULL(phi);
-    SE23_CHECK_NOT_NULL(Jinv);
-    se23_real_t theta;
-    se23_status_t st = angle_of(phi, &theta);
-    if (st != SE23_OK) {
-        return st;
-    }
-    if (theta >= SE23_R(2) * SE23_PI - JL_INV_MARGIN) {
-        return SE23_ERR_DOMAIN;
-    }
-    se23_m3_series(SE23_R(1), SE23_R(-0.5), se23_so3_jl_inv_coeff(theta), phi,
-                   Jinv);
-    return SE23_OK;
+    return eval_series(SERIES_JL_INV, phi, Jinv);
 }
 
 se23_status_t se23_so3_h(const se23_vec3_t *phi, se23_mat3_t *H)
 {
-    SE23_CHECK_NOT_NULL(phi);
-    SE23_CHECK_NOT_NULL(H);
-    se23_real_t theta;
-    se23_status_t st = angle_of(phi, &theta);
-    if (st != SE23_OK) {
-        return st;
-    }
-    se23_so3_coeffs_t c;
-    se23_so3_coeffs(theta, &c);
-    se23_m3_series(SE23_R(0.5), c.c3, c.c4, phi, H);
-    return SE23_OK;
+    return eval_series(SERIES_H, phi, H);
 }
 
 se23_status_t se23_so3_k(const se23_vec3_t *phi, se23_mat3_t *K)
 {
-    SE23_CHECK_NOT_NULL(phi);
-    SE23_CHECK_NOT_NULL(K);
-    se23_real_t theta;
-    se23_status_t st = angle_of(phi, &theta);
-    if (st != SE23_OK) {
-        return st;
-    }
-    se23_real_t k1;
-    se23_real_t k2;
-    se23_so3_k_coeffs(theta, &k1, &k2);
-    se23_m3_series(SE23_R(0.5), k1, k2, phi, K);
-    return SE23_OK;
+    return eval_series(SERIES_K, phi, K);
 }
 
 /* Largest |(R^T R - I)_ij|. */
