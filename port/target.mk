@@ -174,3 +174,8 @@ bench-target: $(TGT_PLUGIN) $(foreach v,$(TGT_VARIANTS),$(TGT)/$(v)/bench.elf)
 	$(PY3) tools/target/bench.py $(TGT_PLUGIN) \
 	    $(foreach v,$(TGT_VARIANTS),$(v)=$(TGT_BOARD_$(v))=$(TGT)/$(v)/bench.elf) \
 	    --out $(TGT)/bench.md
+
+# The README tables (size, stack per function, instructions per call).
+.PHONY: report-target
+report-target: bench-target
+	@$(PY3) tools/target/report.py $(BUILD)
