@@ -1,0 +1,20 @@
+# Paper reproductions (tools/paper.mk), reduced size:
+#  - the Table "Higher-order errors for a low-cost IMU" on 120 s of the UAV
+#    trajectory with 32 bias draws: the exponential correction with the exact
+#    B_k must be no worse than the classical one in velocity RMS at T = 1 s,
+#    10 s and 60 s (the README has the full table);
+#  - the Monte Carlo of the paper's Figure at moderate noise: the mean NEES
+#    of the concentrated Gaussian inside the 95% interval of chi^2_9 for 2000
+#    runs, the standard EKF's above it (the check can fail);
+#  - the cloud plot renders.
+PAPER_DIR="$BUILD/paper"
+check paper-build make -s paper-bins BUILD="$BUILD"
+check paper-table-reduced "$PAPER_DIR/se23-paper-table" --duration 120 --draws 32 --check
+check paper-montecarlo-nees "$PAPER_DIR/se23-montecarlo" --gyro 0.05,0.05,0.05 --accel 0.5 \
+    --runs 2000 --check
+paper_plot() {
+    "$PAPER_DIR/se23-montecarlo" --runs 500 --csv "$PAPER_DIR/check-clouds.csv" &&
+        /usr/bin/python3 tools/montecarlo/plot_clouds.py "$PAPER_DIR/check-clouds.csv" \
+            "$PAPER_DIR/check-clouds.png" && [ -s "$PAPER_DIR/check-clouds.png" ]
+}
+check paper-montecarlo-plot paper_plot
