@@ -1,9 +1,7 @@
-/* Unit, property and statistical tests of src/preint_unc.c and
- * src/preint_classic.c: the factor's Deltas equal se23_preint_add's; the
- * bias Jacobian J against central differences of a double re-integration
- * (exact B_k: to rounding; the basic dt I_{9,6}: visibly not); the
- * classical Jacobians against central differences of the Euler
- * preintegration they are derived for; the covariance against step-by-step
+/* Unit, property and statistical tests of src/preint_unc.c: the factor's
+ * Deltas equal se23_preint_add's; the bias Jacobian J against central
+ * differences of a double re-integration (exact B_k: to rounding; the basic
+ * dt I_{9,6}: visibly not); the covariance against step-by-step
  * propagation with gauss.h and against a Monte Carlo of noisy Deltas (mean
  * NEES in its chi^2_9 interval); bias correction: exact for an accelerometer
  * bias alone (paper section 4.1, last Proposition), second order in the
@@ -18,6 +16,7 @@
 #include <cmocka.h>
 
 #include "gauss_test.h"
+#include "preint_unc_test.h"
 #include "se23/gauss.h"
 #include "se23/preint.h"
 #include "se23/preint_unc.h"
@@ -25,114 +24,16 @@
 #include "se23_test.h"
 
 #define SENTINEL 0x5a
-#define HZ 100
-#define DT (1.0 / HZ)
-#define PI 3.14159265358979323846
-
-/* J against central differences, relative to the largest entry of the
- * column. Double: differences good to ~1e-9. Float: J accumulates rounding
- * over 100 samples. */
+/* Two exact routes that differ in rounding order only, relative. */
 #if SE23_CFG_DOUBLE
-#define JAC_TOL 1e-7
 #define ROUND_TOL 1e-9
 #else
-#define JAC_TOL 2e-4
 #define ROUND_TOL 2e-3
 #endif
 /* The basic B_k = dt I_{9,6} misses O(dt) of J: at least this much. */
 #define BASIC_MISS 2e-3
-#define FD_GYRO 1e-5  /* rad/s */
-#define FD_ACCEL 0.1  /* m/s^2: the Deltas are affine in the accel bias */
-
-static const se23_imu_noise_t QUIET = {SE23_R(0), SE23_R(0), SE23_R(0), SE23_R(0)};
-static const se23_imu_noise_t NOISE = {SE23_R(0.02), SE23_R(0.2), SE23_R(0), SE23_R(0)};
-
-/* A bias estimate and its flat form (dg, da). */
-static const double BBAR[6] = {0.01, -0.02, 0.005, 0.1, -0.2, 0.05};
 
 /* ------------------------------------------------------------ helpers */
-
-/* Error-free corrected inputs of sample k: smooth 3D motion, every axis
- * turning, specific force dominated by gravity. */
-static void motion(int k, double w[3], double f[3])
-{
-    const double t = (k + 0.5) * DT;
-    w[0] = 0.3 * sin(0.5 * t) + 0.2;
-    w[1] = 0.2 * cos(0.3 * t + 0.4);
-    w[2] = 0.1 + 0.15 * sin(0.7 * t);
-    f[0] = 1.0 + 0.8 * sin(0.4 * t);
-    f[1] = 0.5 * cos(0.6 * t);
-    f[2] = -9.81 + 0.3 * sin(0.9 * t);
-}
-
-/* The raw sample k of an IMU whose estimate bbar + db corrects it to the
- * motion: reading = motion - bbar - db (gauss.h sensor convention). */
-static se23_imu_sample_t raw_sample(int k, const double db[6])
-{
-    double w[3], f[3];
-    motion(k, w, f);
-    se23_imu_sample_t s;
-    for (int i = 0; i < 3; ++i) {
-        s.w_ib_b.v[i] = (se23_real_t)(w[i] - BBAR[i] - db[i]);
-        s.f_b.v[i] = (se23_real_t)(f[i] - BBAR[3 + i] - db[3 + i]);
-    }
-    s.dt = SE23_R(DT);
-    return s;
-}
-
-static void bias_vecs(const double b[6], se23_vec3_t *bg, se23_vec3_t *ba)
-{
-    for (int i = 0; i < 3; ++i) {
-        bg->v[i] = (se23_real_t)b[i];
-        ba->v[i] = (se23_real_t)b[3 + i];
-    }
-}
-
-/* fu = the factor of n raw samples (db = 0) at the estimate BBAR. */
-static void make_factor(int n, se23_input_jac_kind_t kind,
-                        const se23_imu_noise_t *noise, se23_preint_unc_t *fu)
-{
-    static const double zero[6] = {0};
-    se23_vec3_t bg, ba;
-    bias_vecs(BBAR, &bg, &ba);
-    memset(fu, 0, sizeof *fu); /* padding too: the tests compare bytes */
-    assert_int_equal(se23_preint_unc_reset(&bg, &ba, kind, fu), SE23_OK);
-    for (int k = 0; k < n; ++k) {
-        const se23_imu_sample_t s = raw_sample(k, zero);
-        assert_int_equal(se23_preint_unc_add(fu, &s, noise), SE23_OK);
-    }
-}
-
-/* D = the double re-integration of n samples of corrected inputs
- * motion + e (Phi_dt then the increment, preint.h); exact increments, or
- * Euler ones (exp(w dt), dt f, dt^2 f / 2) when euler. */
-static void ref_factor(int n, const double e[6], int euler, gt_m5_t *D)
-{
-    gt_m5_identity(D);
-    for (int k = 0; k < n; ++k) {
-        double w[3], f[3];
-        motion(k, w, f);
-        for (int i = 0; i < 3; ++i) {
-            w[i] += e[i];
-            f[i] += e[3 + i];
-        }
-        gt_m5_t U;
-        if (euler) {
-            const double xi[9] = {w[0] * DT, w[1] * DT, w[2] * DT, 0, 0, 0, 0, 0, 0};
-            gt_exp(xi, &U);
-            for (int i = 0; i < 3; ++i) {
-                U.m[i][3] = DT * f[i];
-                U.m[i][4] = 0.5 * DT * DT * f[i];
-            }
-        } else {
-            gt_increment(w, f, DT, &U);
-        }
-        for (int i = 0; i < 3; ++i) {
-            D->m[i][4] += DT * D->m[i][3];
-        }
-        gt_m5_mul(D, &U, D);
-    }
-}
 
 /* col = central difference of log(D(0)^-1 D(h e_j)) / h, exact increments. */
 static void fd_column(int n, int j, double col[9])
@@ -162,31 +63,6 @@ static double column_error(const se23_mat9x6_t *J, int j, const double col[9])
         scale = fmax(scale, fabs(col[i]));
     }
     return err / scale;
-}
-
-static void pose_of(const gt_m5_t *M, se23_pose_t *T)
-{
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-            T->R.m[i][j] = (se23_real_t)M->m[i][j];
-        }
-        T->v.v[i] = (se23_real_t)M->m[i][3];
-        T->p.v[i] = (se23_real_t)M->m[i][4];
-    }
-}
-
-/* |a.v - b.v| and |a.p - b.p|. */
-static void vp_errors(const se23_pose_t *a, const se23_pose_t *b, double *ev, double *ep)
-{
-    double sv = 0, sp = 0;
-    for (int i = 0; i < 3; ++i) {
-        const double dv = (double)a->v.v[i] - b->v.v[i];
-        const double dp = (double)a->p.v[i] - b->p.v[i];
-        sv += dv * dv;
-        sp += dp * dp;
-    }
-    *ev = sqrt(sv);
-    *ep = sqrt(sp);
 }
 
 /* The three corrections of fu_ex (exact J, classical) and fu_ba (basic J)
@@ -296,47 +172,6 @@ static void test_preint_unc_bias_jacobian_matches_central_differences(void **sta
                   worst_ex, worst_ba);
     assert_true(worst_ex < JAC_TOL);
     assert_true(worst_ba > BASIC_MISS);
-}
-
-static void test_preint_unc_classic_jacobians_match_euler_differences(void **state)
-{
-    (void)state;
-    /* Forster et al.'s Jacobians are the derivatives of the Euler-integrated
-     * Deltas (exp(w dt), dt f, dt^2 f/2 per sample): check them against
-     * central differences of that preintegration (rotation as
-     * log(DR^T DR')). */
-    enum { N = HZ };
-    se23_preint_unc_t fu;
-    make_factor(N, SE23_INPUT_JAC_EXACT, &QUIET, &fu);
-    const se23_mat3_t *blk[2][3] = {{&fu.cl.dR_dbg, &fu.cl.dV_dbg, &fu.cl.dX_dbg},
-                                    {NULL, &fu.cl.dV_dba, &fu.cl.dX_dba}};
-    double worst = 0;
-    for (int j = 0; j < 6; ++j) {
-        const double h = (j < 3) ? FD_GYRO : FD_ACCEL;
-        double e[6] = {0}, rp[9], rm[9];
-        gt_m5_t Dp, Dm;
-        e[j] = h;
-        ref_factor(N, e, 1, &Dp);
-        e[j] = -h;
-        ref_factor(N, e, 1, &Dm);
-        gt_log_between(&Dm, &Dp, rp); /* rotation part: log(DR-^T DR+) */
-        for (int i = 0; i < 3; ++i) {
-            rm[i] = rp[i] / (2.0 * h);
-            rm[3 + i] = (Dp.m[i][3] - Dm.m[i][3]) / (2.0 * h);
-            rm[6 + i] = (Dp.m[i][4] - Dm.m[i][4]) / (2.0 * h);
-        }
-        const int side = j / 3, c = j % 3;
-        for (int b = side; b < 3; ++b) { /* dR/dba is zero and not stored */
-            double err = 0, scale = 0;
-            for (int i = 0; i < 3; ++i) {
-                err = fmax(err, fabs((double)blk[side][b]->m[i][c] - rm[3 * b + i]));
-                scale = fmax(scale, fabs(rm[3 * b + i]));
-            }
-            worst = fmax(worst, err / scale);
-        }
-    }
-    print_message("classical Jacobians vs Euler central differences: %.2e\n", worst);
-    assert_true(worst < JAC_TOL);
 }
 
 /* ------------------------------------------------------------ covariance */
@@ -741,7 +576,6 @@ int main(void)
         cmocka_unit_test(test_preint_unc_reset_gives_empty_factor),
         cmocka_unit_test(test_preint_unc_add_deltas_equal_preint_add),
         cmocka_unit_test(test_preint_unc_bias_jacobian_matches_central_differences),
-        cmocka_unit_test(test_preint_unc_classic_jacobians_match_euler_differences),
         cmocka_unit_test(test_preint_unc_cov_matches_step_by_step_propagation),
         cmocka_unit_test(test_preint_unc_cov_monte_carlo_nees_within_chi2_interval),
         cmocka_unit_test(test_preint_unc_correct_to_same_bias_is_identity),
