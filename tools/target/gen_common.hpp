@@ -252,6 +252,28 @@ inline Scale scale_model() { return scale_blocks({3, 3, 1, 1, 9, 3, 3}); }
 
 inline int n_angles() { return int(edge_angles().size()); }
 
+// Phi_t(R, v, p) = (R, v, p + t v).
+inline Mat5L phi_t(const Mat5L &T, LD t)
+{
+    Mat5L out = T;
+    out.block<3, 1>(0, 4) += t * T.block<3, 1>(0, 3);
+    return out;
+}
+// The carried state (R, v + Om x p, p) of a user state (sign 1), and back (-1).
+inline Mat5L carried_pose(const Mat5L &T, const Vec3L &Om, LD sign)
+{
+    Mat5L out = T;
+    out.block<3, 1>(0, 3) += sign * Om.cross(Vec3L(T.block<3, 1>(0, 4)));
+    return out;
+}
+// A se23_preint_t as a row: delta, dt, n.
+inline void put_preint(Row &r, const Mat5L &delta, LD dt, LD n)
+{
+    put_pose(r, delta);
+    put(r, dt);
+    put(r, n);
+}
+
 /** Registers the generators of one group of routines, keyed by function name. */
 using Gens = std::map<std::string, Gen>;
 void add_lie(Gens &g); // so3.h, se23.h (gen_lie.cpp)

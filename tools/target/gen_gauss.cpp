@@ -190,12 +190,6 @@ Mat15L carried_m(const Mat5L &T, const Vec3L &Om, LD sign)
     M.block<3, 3>(3, 6) = -sign * hat3(Vec3L(R.transpose() * Om));
     return M;
 }
-Mat5L carried_pose(const Mat5L &T, const Vec3L &Om, LD sign)
-{
-    Mat5L out = T;
-    out.block<3, 1>(0, 3) += sign * Om.cross(Vec3L(T.block<3, 1>(0, 4)));
-    return out;
-}
 void put_model(Ctx &c, Row &r, Vec3L &g, Vec3L &Om, LD dt)
 {
     g = Vec3L(0, 0, 9.81L) + vec3_any(c, 0.05L);

@@ -60,6 +60,38 @@ Row pose_input(Ctx &c, int k)
     return r;
 }
 
+// A check-free routine of one pose: k-th random pose in, out = f(pose).
+Gen of_pose(std::function<void(Row &, const Mat5L &)> f)
+{
+    return {0,
+            [](Ctx &c, int k) {
+                Row r;
+                put_pose(r, pose_k(c, k));
+                return r;
+            },
+            [f](const Ctx &, const Row &in, Row &out) {
+                Rd rd{in};
+                f(out, rd.pose());
+                return int(SE23_OK);
+            }};
+}
+
+// A check-free routine of an arbitrary n x n matrix (entries in [-s, s]).
+Gen of_matrix(int n, LD s, std::function<void(Row &, Rd &)> f)
+{
+    return {0,
+            [n, s](Ctx &c, int) {
+                Row r;
+                for (int i = 0; i < n * n; ++i) r.push_back(c.uniform(-s, s));
+                return r;
+            },
+            [f](const Ctx &, const Row &in, Row &out) {
+                Rd rd{in};
+                f(out, rd);
+                return int(SE23_OK);
+            }};
+}
+
 } // namespace
 
 void add_lie(Gens &g)
@@ -77,17 +109,7 @@ void add_lie(Gens &g)
                              put(out, hat3(rd.v3()));
                              return int(SE23_OK);
                          }};
-    g["se23_so3_vee"] = {0,
-                         [](Ctx &c, int) {
-                             Row r;
-                             for (int i = 0; i < 9; ++i) r.push_back(c.uniform(-2, 2));
-                             return r;
-                         },
-                         [](const Ctx &, const Row &in, Row &out) {
-                             Rd rd{in};
-                             put(out, vee3(rd.m3()));
-                             return int(SE23_OK);
-                         }};
+    g["se23_so3_vee"] = of_matrix(3, 2, [](Row &out, Rd &rd) { put(out, vee3(rd.m3())); });
     g["se23_so3_exp"] = phi_gen([](const Vec3L &p) { return so3_exp(p); });
     g["se23_so3_jl"] = phi_gen([](const Vec3L &p) { return jl(p); });
     g["se23_so3_jr"] = phi_gen([](const Vec3L &p) { return jr(p); });
@@ -174,17 +196,7 @@ void add_lie(Gens &g)
                              put_pose(out, compose(A, rd.pose()));
                              return int(SE23_OK);
                          }};
-    g["se23_inverse"] = {0,
-                         [](Ctx &c, int k) {
-                             Row r;
-                             put_pose(r, pose_k(c, k));
-                             return r;
-                         },
-                         [](const Ctx &, const Row &in, Row &out) {
-                             Rd rd{in};
-                             put_pose(out, inverse(rd.pose()));
-                             return int(SE23_OK);
-                         }};
+    g["se23_inverse"] = of_pose([](Row &out, const Mat5L &T) { put_pose(out, inverse(T)); });
     g["se23_act"] = {0,
                      [](Ctx &c, int k) {
                          Row r;
@@ -211,28 +223,8 @@ void add_lie(Gens &g)
                          put(out, se23_hat(rd.v9()));
                          return int(SE23_OK);
                      }};
-    g["se23_vee"] = {0,
-                     [](Ctx &c, int) {
-                         Row r;
-                         for (int i = 0; i < 25; ++i) r.push_back(c.uniform(-5, 5));
-                         return r;
-                     },
-                     [](const Ctx &, const Row &in, Row &out) {
-                         Rd rd{in};
-                         put(out, se23_vee(rd.m5()));
-                         return int(SE23_OK);
-                     }};
-    g["se23_to_mat5"] = {0,
-                         [](Ctx &c, int k) {
-                             Row r;
-                             put_pose(r, pose_k(c, k));
-                             return r;
-                         },
-                         [](const Ctx &, const Row &in, Row &out) {
-                             Rd rd{in};
-                             put(out, rd.pose());
-                             return int(SE23_OK);
-                         }};
+    g["se23_vee"] = of_matrix(5, 5, [](Row &out, Rd &rd) { put(out, se23_vee(rd.m5())); });
+    g["se23_to_mat5"] = of_pose([](Row &out, const Mat5L &T) { put(out, T); });
     g["se23_from_mat5"] = {
         4,
         [](Ctx &c, int k) {
@@ -280,28 +272,8 @@ void add_lie(Gens &g)
                          if (st == SE23_OK) put(out, se23_log(T));
                          return st;
                      }};
-    g["se23_adjoint"] = {0,
-                         [](Ctx &c, int k) {
-                             Row r;
-                             put_pose(r, pose_k(c, k));
-                             return r;
-                         },
-                         [](const Ctx &, const Row &in, Row &out) {
-                             Rd rd{in};
-                             put(out, adjoint(rd.pose()));
-                             return int(SE23_OK);
-                         }};
-    g["se23_adjoint_inv"] = {0,
-                             [](Ctx &c, int k) {
-                                 Row r;
-                                 put_pose(r, pose_k(c, k));
-                                 return r;
-                             },
-                             [](const Ctx &, const Row &in, Row &out) {
-                                 Rd rd{in};
-                                 put(out, adjoint_inv(rd.pose()));
-                                 return int(SE23_OK);
-                             }};
+    g["se23_adjoint"] = of_pose([](Row &out, const Mat5L &T) { put(out, adjoint(T)); });
+    g["se23_adjoint_inv"] = of_pose([](Row &out, const Mat5L &T) { put(out, adjoint_inv(T)); });
     g["se23_pose_check"] = {n + 3, pose_input, [](const Ctx &c, const Row &in, Row &) {
                                 Rd rd{in};
                                 return rot_status(c, rd.pose().block<3, 3>(0, 0), in);

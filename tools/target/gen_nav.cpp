@@ -69,20 +69,6 @@ Sample read_sample(Rd &rd)
     s.dt = rd.s();
     return s;
 }
-// Phi_t(R, v, p) = (R, v, p + t v).
-Mat5L phi_t(const Mat5L &T, LD t)
-{
-    Mat5L out = T;
-    out.block<3, 1>(0, 4) += t * T.block<3, 1>(0, 3);
-    return out;
-}
-// Carried state (R, v + Om x p, p) of a user state, and back (sign -1).
-Mat5L carried(const Mat5L &T, const Vec3L &Om, LD sign)
-{
-    Mat5L out = T;
-    out.block<3, 1>(0, 3) += sign * Om.cross(Vec3L(T.block<3, 1>(0, 4)));
-    return out;
-}
 Mat5L rk4(const Mat5L &T, const Sample &s, const Model &m)
 {
     return nav_rk4(T, s.w, s.f, m.g, m.Om, s.dt, kRk4Steps);
@@ -149,12 +135,6 @@ bool frame_ok(LD frame) { return frame == 0 || frame == 1; }
 
 // A factor as the library holds it: random Delta (or accumulated from
 // samples, recorded in c.samples), dt, n.
-void put_preint(Row &r, const Mat5L &delta, LD dt, LD n)
-{
-    put_pose(r, delta);
-    put(r, dt);
-    put(r, n);
-}
 Mat5L accumulate(Ctx &c, LD &dt_sum)
 {
     c.samples.clear();
@@ -343,7 +323,7 @@ void add_nav(Gens &g)
             const Sample s = read_sample(rd);
             if (!sample_ok(s, m.dt_max)) return int(SE23_ERR_DT);
             if (!is_rotation(Tc.block<3, 3>(0, 0), c)) return int(SE23_ERR_NOT_ROTATION);
-            put_pose(out, carried(rk4(carried(Tc, m.Om, -1), s, m), m.Om, 1));
+            put_pose(out, carried_pose(rk4(carried_pose(Tc, m.Om, -1), s, m), m.Om, 1));
             return int(SE23_OK);
         }};
     const auto conv_input = [](Ctx &c, int k) {
@@ -355,13 +335,13 @@ void add_nav(Gens &g)
     g["se23_imu_carried_from_user"] = {0, conv_input, [](const Ctx &, const Row &in, Row &out) {
                                            Rd rd{in};
                                            const Model m = read_model(rd);
-                                           put_pose(out, carried(rd.pose(), m.Om, 1));
+                                           put_pose(out, carried_pose(rd.pose(), m.Om, 1));
                                            return int(SE23_OK);
                                        }};
     g["se23_imu_user_from_carried"] = {0, conv_input, [](const Ctx &, const Row &in, Row &out) {
                                            Rd rd{in};
                                            const Model m = read_model(rd);
-                                           put_pose(out, carried(rd.pose(), m.Om, -1));
+                                           put_pose(out, carried_pose(rd.pose(), m.Om, -1));
                                            return int(SE23_OK);
                                        }};
     // ---- preint.h
@@ -452,11 +432,11 @@ void add_nav(Gens &g)
                     return int(SE23_ERR_NOT_ROTATION);
                 }
                 if (dt < 0) return int(SE23_ERR_DT);
-                if (carried_states) T = carried(T, m.Om, -1);
+                if (carried_states) T = carried_pose(T, m.Om, -1);
                 for (const auto &x : c.samples) {
                     T = rk4(T, Sample{Vec3L(x[0], x[1], x[2]), Vec3L(x[3], x[4], x[5]), x[6]}, m);
                 }
-                put_pose(out, carried_states ? carried(T, m.Om, 1) : T);
+                put_pose(out, carried_states ? carried_pose(T, m.Om, 1) : T);
                 return int(SE23_OK);
             }};
     };

@@ -109,12 +109,6 @@ Scale scale_unc()
                          {54, scale_mat_blocks(9, 6, 3)},
                          {45, scale_blocks({9, 9, 9, 9, 9})}});
 }
-void put_preint(Row &r, const Mat5L &delta, LD dt, LD n)
-{
-    put_pose(r, delta);
-    put(r, dt);
-    put(r, n);
-}
 
 } // namespace
 
@@ -192,9 +186,7 @@ void add_preint_unc(Gens &g)
             cl[2] = u.cl[2] + DR * dt;
             cl[3] = u.cl[3] + u.cl[1] * dt - DR * fx * u.cl[0] * (dt * dt / 2);
             cl[4] = u.cl[4] + u.cl[2] * dt + DR * (dt * dt / 2);
-            Mat5L D = u.delta;
-            D.block<3, 1>(0, 4) += dt * D.block<3, 1>(0, 3);
-            u.delta = D * U;
+            u.delta = phi_t(u.delta, dt) * U;
             u.dt += dt;
             u.n += 1;
             u.P = F * u.P * F.transpose() + B * N * B.transpose();
