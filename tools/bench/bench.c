@@ -12,7 +12,10 @@
 #include <string.h>
 
 #include "se23/earth.h"
+#include "se23/gauss.h"
 #include "se23/imu.h"
+#include "se23/kalman.h"
+#include "se23/preint_unc.h"
 #include "se23/se23.h"
 #include "se23/so3.h"
 
@@ -25,6 +28,10 @@ static se23_tangent_t xis[N_INPUTS];
 static se23_pose_t poses[N_INPUTS];
 static se23_imu_sample_t samples[N_INPUTS];
 static se23_earth_model_t model;
+static se23_gauss_t filters[2]; /* n = 9 and n = 15 */
+static se23_imu_noise_t noise;
+static se23_meas_t gnss;
+static se23_preint_unc_t factor;
 
 /* Results are written here so the compiler cannot drop the calls. */
 static volatile se23_real_t sink;
@@ -56,6 +63,26 @@ static void prepare(void)
     se23_vec3_t g = {{0, 0, (se23_real_t)9.81}};
     se23_vec3_t w = {{(se23_real_t)5.2e-5, 0, (se23_real_t)-5.2e-5}};
     (void)se23_earth_model_init(&g, &w, (se23_real_t)0.005, (se23_real_t)0.1, &model);
+
+    noise.gyro_noise = (se23_real_t)1e-4;
+    noise.accel_noise = (se23_real_t)1e-3;
+    noise.gyro_walk = (se23_real_t)1e-6;
+    noise.accel_walk = (se23_real_t)1e-5;
+    for (int f = 0; f < 2; ++f) {
+        se23_gauss_t *gs = &filters[f];
+        memset(gs, 0, sizeof *gs);
+        gs->T = poses[0];
+        gs->n = f == 0 ? 9 : 15;
+        for (int k = 0; k < gs->n; ++k) {
+            gs->P.m[k * SE23_GAUSS_NMAX + k] = (se23_real_t)(k < 9 ? 1e-2 : 1e-6);
+        }
+    }
+    se23_vec3_t p_meas = filters[1].T.p, lever = {{0, 0, 0}};
+    se23_mat3_t cov = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+    p_meas.v[0] = (se23_real_t)(p_meas.v[0] + 0.5);
+    (void)se23_meas_pos_nav(&filters[1].T, &p_meas, &lever, &cov, &gnss);
+    se23_vec3_t zero = {{0, 0, 0}};
+    (void)se23_preint_unc_reset(&zero, &zero, SE23_INPUT_JAC_EXACT, &factor);
 }
 
 static void k_so3_exp(int i)
@@ -137,6 +164,34 @@ static void k_imu_step(int i)
     sink = T.p.v[0];
 }
 
+static void k_gauss_predict_9(int i)
+{
+    se23_gauss_t out;
+    (void)se23_gauss_predict(&model, &filters[0], &samples[i], &noise,
+                             SE23_INPUT_JAC_EXACT, &out);
+    sink = out.P.m[0];
+}
+static void k_gauss_predict_15(int i)
+{
+    se23_gauss_t out;
+    (void)se23_gauss_predict(&model, &filters[1], &samples[i], &noise,
+                             SE23_INPUT_JAC_EXACT, &out);
+    sink = out.P.m[0];
+}
+static void k_kalman_update_gnss_pos_15(int i)
+{
+    se23_gauss_t out;
+    (void)i;
+    (void)se23_kalman_update(&filters[1], &gnss, &out, NULL);
+    sink = out.P.m[0];
+}
+static void k_preint_unc_add(int i)
+{
+    se23_preint_unc_t f = factor;
+    (void)se23_preint_unc_add(&f, &samples[i], &noise);
+    sink = f.f.delta.p.v[0];
+}
+
 typedef struct {
     const char *name;
     void (*fn)(int);
@@ -150,6 +205,10 @@ static const kernel_t kernels[] = {
     {"se23_inverse", k_se23_inverse}, {"se23_adjoint", k_se23_adjoint},
     {"se23_adjoint_inv", k_se23_adjoint_inv},
     {"imu_increment", k_imu_increment}, {"imu_step", k_imu_step},
+    {"gauss_predict_n9", k_gauss_predict_9},
+    {"gauss_predict_n15", k_gauss_predict_15},
+    {"kalman_update_gnss_n15", k_kalman_update_gnss_pos_15},
+    {"preint_unc_add", k_preint_unc_add},
 };
 #define N_KERNELS (sizeof kernels / sizeof kernels[0])
 
