@@ -79,7 +79,7 @@ void se23_hat(const se23_tangent_t *xi, se23_mat5_t *X)
 void se23_vee(const se23_mat5_t *X, se23_tangent_t *xi)
 {
     se23_tangent_t out;
-    out.v[SE23_IDX_PHI + 0] = SE23_R(0.5) * (X->m[2][1] - X->m[1][2]);
+    out.v[SE23_IDX_PHI] = SE23_R(0.5) * (X->m[2][1] - X->m[1][2]);
     out.v[SE23_IDX_PHI + 1] = SE23_R(0.5) * (X->m[0][2] - X->m[2][0]);
     out.v[SE23_IDX_PHI + 2] = SE23_R(0.5) * (X->m[1][0] - X->m[0][1]);
     for (int i = 0; i < 3; ++i) {

@@ -215,7 +215,10 @@ se23_status_t se23_so3_normalize(const se23_mat3_t *R, se23_mat3_t *Rn)
      * rounding. Stop as soon as the drift is at rounding level. */
     const se23_real_t done = SE23_R(4) * SE23_EPSILON;
     se23_mat3_t X = *R;
-    for (int it = 0; it < NORMALIZE_MAX_ITER && orthogonality_error(&X) > done; ++it) {
+    for (int it = 0; it < NORMALIZE_MAX_ITER; ++it) {
+        if (orthogonality_error(&X) <= done) {
+            break;
+        }
         se23_mat3_t XtX;
         se23_m3_mul_tn(&X, &X, &XtX);
         for (int i = 0; i < 3; ++i) {
