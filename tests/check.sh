@@ -13,6 +13,13 @@ FAILED=0
 FAILED_NAMES=""
 VALGRIND="valgrind --quiet --error-exitcode=99 --leak-check=full --errors-for-leak-kinds=definite,indirect"
 
+# progress NAME: shows the step being run on a terminal; the result line
+# then overwrites it. In a log (no terminal) nothing is printed.
+progress() {
+    [ -t 1 ] && printf '  ..    %-44s\r' "$1"
+    return 0
+}
+
 note_fail() {
     FAILED=$((FAILED + 1))
     FAILED_NAMES="$FAILED_NAMES $1"
@@ -24,6 +31,7 @@ check() {
     shift
     log="$LOGDIR/$name.log"
     start=$(date +%s)
+    progress "$name"
     if "$@" >"$log" 2>&1; then
         PASSED=$((PASSED + 1))
         printf '  ok    %-44s %3ss\n' "$name" $(($(date +%s) - start))
@@ -40,6 +48,7 @@ cmocka_test() {
     name=$1
     bin=$2
     log="$LOGDIR/$name.log"
+    progress "$name"
     $VALGRIND "$bin" >"$log" 2>&1
     rc=$?
     p=$(sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' "$log" | tail -n 1)
