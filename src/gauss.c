@@ -13,20 +13,6 @@
 
 enum { S = SE23_GAUSS_NMAX };
 
-static void load3(const se23_real_t *x, se23_vec3_t *a)
-{
-    a->v[0] = x[0];
-    a->v[1] = x[1];
-    a->v[2] = x[2];
-}
-
-static void store3(const se23_vec3_t *a, se23_real_t *x)
-{
-    x[0] = a->v[0];
-    x[1] = a->v[1];
-    x[2] = a->v[2];
-}
-
 static se23_status_t dt_check(se23_real_t dt)
 {
     if (!(dt > SE23_R(0) && dt <= SE23_R(SE23_CFG_DT_MAX))) {
@@ -54,9 +40,9 @@ void se23_gauss_fk_apply(const se23_pose_t *U, se23_real_t dt,
                          const se23_tangent_t *x, se23_tangent_t *y)
 {
     se23_vec3_t xp, xn, xr, c, t, out[3];
-    load3(&x->v[SE23_IDX_PHI], &xp);
-    load3(&x->v[SE23_IDX_NU], &xn);
-    load3(&x->v[SE23_IDX_RHO], &xr);
+    se23_v3_load(&x->v[SE23_IDX_PHI], &xp);
+    se23_v3_load(&x->v[SE23_IDX_NU], &xn);
+    se23_v3_load(&x->v[SE23_IDX_RHO], &xr);
     se23_m3_tmul_v3(&U->R, &xp, &out[0]);
     se23_v3_cross(&U->v, &xp, &c);        /* nu - v^ phi */
     se23_v3_axpy(&xn, SE23_R(-1), &c, &t);
@@ -65,9 +51,9 @@ void se23_gauss_fk_apply(const se23_pose_t *U, se23_real_t dt,
     se23_v3_axpy(&xr, dt, &xn, &t);
     se23_v3_axpy(&t, SE23_R(-1), &c, &t);
     se23_m3_tmul_v3(&U->R, &t, &out[2]);
-    store3(&out[0], &y->v[SE23_IDX_PHI]);
-    store3(&out[1], &y->v[SE23_IDX_NU]);
-    store3(&out[2], &y->v[SE23_IDX_RHO]);
+    se23_v3_store(&out[0], &y->v[SE23_IDX_PHI]);
+    se23_v3_store(&out[1], &y->v[SE23_IDX_NU]);
+    se23_v3_store(&out[2], &y->v[SE23_IDX_RHO]);
 }
 
 void se23_gauss_fk(const se23_pose_t *U, se23_real_t dt, se23_mat9_t *F)
@@ -338,11 +324,11 @@ static void m_map(const void *ctx, const se23_real_t *x, se23_real_t *y)
     for (int i = 0; i < c->n; ++i) {
         y[i] = x[i];
     }
-    load3(&x[SE23_IDX_RHO], &rho);
-    load3(&x[SE23_IDX_NU], &nu);
+    se23_v3_load(&x[SE23_IDX_RHO], &rho);
+    se23_v3_load(&x[SE23_IDX_NU], &nu);
     se23_v3_cross(&c->w, &rho, &wr);
     se23_v3_axpy(&nu, c->sign, &wr, &nu);
-    store3(&nu, &y[SE23_IDX_NU]);
+    se23_v3_store(&nu, &y[SE23_IDX_NU]);
 }
 
 static se23_status_t convert(const se23_earth_model_t *model,

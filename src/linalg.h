@@ -12,6 +12,11 @@
 /** Nonzero if all n values are finite. */
 int se23_all_finite(const se23_real_t *x, int n);
 
+/** a = (x[0], x[1], x[2]): a 3-block of a flat array as a vector. */
+void se23_v3_load(const se23_real_t *x, se23_vec3_t *a);
+/** (x[0], x[1], x[2]) = a. */
+void se23_v3_store(const se23_vec3_t *a, se23_real_t *x);
+
 se23_real_t se23_v3_dot(const se23_vec3_t *a, const se23_vec3_t *b);
 /** out = a x b */
 void se23_v3_cross(const se23_vec3_t *a, const se23_vec3_t *b, se23_vec3_t *out);

@@ -7,20 +7,6 @@
 #include "se23_math.h"
 #include "so3_series.h"
 
-static void block_get(const se23_tangent_t *xi, int first, se23_vec3_t *out)
-{
-    for (int i = 0; i < 3; ++i) {
-        out->v[i] = xi->v[first + i];
-    }
-}
-
-static void block_set(se23_tangent_t *xi, int first, const se23_vec3_t *in)
-{
-    for (int i = 0; i < 3; ++i) {
-        xi->v[first + i] = in->v[i];
-    }
-}
-
 void se23_identity(se23_pose_t *T)
 {
     se23_m3_identity(&T->R);
@@ -63,7 +49,7 @@ void se23_hat(const se23_tangent_t *xi, se23_mat5_t *X)
 {
     se23_vec3_t phi;
     se23_mat3_t W;
-    block_get(xi, SE23_IDX_PHI, &phi);
+    se23_v3_load(&xi->v[SE23_IDX_PHI], &phi);
     se23_m3_skew(&phi, &W);
     se23_mat5_t out = {{{0}}};
     for (int i = 0; i < 3; ++i) {
@@ -145,9 +131,9 @@ se23_status_t se23_exp(const se23_tangent_t *xi, se23_pose_t *T)
     se23_vec3_t phi;
     se23_vec3_t nu;
     se23_vec3_t rho;
-    block_get(xi, SE23_IDX_PHI, &phi);
-    block_get(xi, SE23_IDX_NU, &nu);
-    block_get(xi, SE23_IDX_RHO, &rho);
+    se23_v3_load(&xi->v[SE23_IDX_PHI], &phi);
+    se23_v3_load(&xi->v[SE23_IDX_NU], &nu);
+    se23_v3_load(&xi->v[SE23_IDX_RHO], &rho);
     /* exp(phi^) = I + c1 W + c2 W^2 and J_l = I + c2 W + c3 W^2 share
      * their coefficients: evaluate them once. */
     se23_so3_coeffs_t c;
@@ -180,9 +166,9 @@ se23_status_t se23_log(const se23_pose_t *T, se23_tangent_t *xi)
     se23_vec3_t rho;
     se23_m3_mul_v3(&Jinv, &T->v, &nu);
     se23_m3_mul_v3(&Jinv, &T->p, &rho);
-    block_set(xi, SE23_IDX_PHI, &phi);
-    block_set(xi, SE23_IDX_NU, &nu);
-    block_set(xi, SE23_IDX_RHO, &rho);
+    se23_v3_store(&phi, &xi->v[SE23_IDX_PHI]);
+    se23_v3_store(&nu, &xi->v[SE23_IDX_NU]);
+    se23_v3_store(&rho, &xi->v[SE23_IDX_RHO]);
     return SE23_OK;
 }
 

@@ -105,7 +105,7 @@ static void test_linalg_m3_series_matches_explicit_form(void **state)
     assert_mat3_near(&out, &expected, TOL);
 }
 
-static void test_linalg_det_axpy_identity_finite(void **state)
+static void test_linalg_det_axpy_load_store_finite(void **state)
 {
     (void)state;
     se23_mat3_t I, M = {{{2, 1, 0}, {0, 3, 1}, {1, 0, 1}}}, out;
@@ -120,6 +120,13 @@ static void test_linalg_det_axpy_identity_finite(void **state)
     assert_near(c.v[2], 1, 0, 0);
     se23_v3_scale(&a, 3, &c);
     assert_near(c.v[1], 6, 0, 0);
+    se23_real_t flat[5] = {9, 9, 9, 9, 9};
+    se23_v3_store(&a, &flat[1]);
+    assert_near(flat[0], 9, 0, 0);
+    assert_near(flat[3], 3, 0, 0);
+    assert_near(flat[4], 9, 0, 0);
+    se23_v3_load(&flat[1], &c);
+    assert_array_near(c.v, a.v, 3, 0, 0);
     const se23_real_t ok[3] = {1, 2, 3};
     const se23_real_t bad[3] = {1, (se23_real_t)NAN, 3};
     const se23_real_t inf[3] = {1, 2, -(se23_real_t)INFINITY};
@@ -134,7 +141,7 @@ int main(void)
         cmocka_unit_test(test_linalg_m3_products),
         cmocka_unit_test(test_linalg_m3_vector_products_and_skew),
         cmocka_unit_test(test_linalg_m3_series_matches_explicit_form),
-        cmocka_unit_test(test_linalg_det_axpy_identity_finite),
+        cmocka_unit_test(test_linalg_det_axpy_load_store_finite),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
