@@ -11,17 +11,16 @@
 #   make paper             both
 #
 # The tools reuse the tests' seeded generator and double statistics
-# (tests/support/se23_test.c, tests/unit/gauss_test.h), hence -lcmocka.
+# (tests/support/se23_rng.c, tests/support/gauss_test.h; no test framework).
 # tests/check.d/70-paper.sh runs both on a reduced size in `make check`.
 
 PAPER := $(BUILD)/paper
 PAPER_LIB := $(BUILD)/lib-host-double/libse23.a
 PAPER_CFLAGS := $(WARN) -Wshadow -Wstrict-prototypes -Wmissing-prototypes -O2 \
-                -Iinclude -Itests/support -Itests/unit -DSE23_CFG_DOUBLE=1 \
-                $(shell pkg-config --cflags cmocka 2>/dev/null)
-PAPER_LIBS := $(shell pkg-config --libs cmocka 2>/dev/null || echo -lcmocka) -lm
-PAPER_SUPPORT := tests/support/se23_test.c
-PAPER_SUPPORT_H := tests/support/se23_test.h tests/unit/gauss_test.h
+                -Iinclude -Itests/support -DSE23_CFG_DOUBLE=1
+PAPER_LIBS := -lm
+PAPER_SUPPORT := tests/support/se23_rng.c
+PAPER_SUPPORT_H := tests/support/se23_rng.h tests/support/gauss_test.h
 PAPER_TABLE_SRCS := tools/paper_table/table.c tools/paper_table/uav.c
 PAPER_MC_SRCS := tools/montecarlo/montecarlo.c tools/montecarlo/ekf.c
 PAPER_PY := /usr/bin/python3

@@ -1,8 +1,8 @@
 /**
  * @file se23_test.h
  * @brief Test helpers shared by the CMocka tests: comparisons in double with
- *        absolute + relative tolerance (CMocka 1.1.5 has none), a seeded
- *        random generator, and random group elements.
+ *        absolute + relative tolerance (CMocka 1.1.5 has none); with
+ *        se23_rng.h, the seeded generator of random inputs.
  *
  * Include after <setjmp.h>, <stdarg.h>, <stddef.h> and <cmocka.h>.
  */
@@ -10,9 +10,9 @@
 #define SE23_TEST_H
 
 #include <float.h>
-#include <stdint.h>
 
 #include "se23/types.h"
+#include "se23_rng.h"
 
 /** Machine epsilon of the build's precision. */
 #if SE23_CFG_DOUBLE
@@ -51,25 +51,5 @@ void se23t_assert_array_near(const se23_real_t *actual,
         assert_array_near((a)->v.v, (e)->v.v, 3, (abs_tol), 0.0);              \
         assert_array_near((a)->p.v, (e)->p.v, 3, (abs_tol), 0.0);              \
     } while (0)
-
-/** Seeded generator (splitmix64): the same seed gives the same sequence. */
-typedef struct {
-    uint64_t state;
-} se23t_rng_t;
-
-void se23t_rng_seed(se23t_rng_t *rng, uint64_t seed);
-/** Uniform in [lo, hi). */
-double se23t_uniform(se23t_rng_t *rng, double lo, double hi);
-/** Standard normal (Box-Muller). */
-double se23t_normal(se23t_rng_t *rng);
-/** Vector with entries uniform in [-scale, scale). */
-void se23t_random_vec3(se23t_rng_t *rng, double scale, se23_vec3_t *out);
-/** Rotation vector with uniform direction and angle exactly `angle`. */
-void se23t_random_axis_angle(se23t_rng_t *rng, double angle, se23_vec3_t *out);
-/** Tangent with rotation angle uniform in [0, max_angle) and nu, rho uniform in [-scale, scale). */
-void se23t_random_tangent(se23t_rng_t *rng, double max_angle, double scale,
-                          se23_tangent_t *out);
-/** Pose: rotation from a random axis-angle below pi, v and p in [-scale, scale). */
-void se23t_random_pose(se23t_rng_t *rng, double scale, se23_pose_t *out);
 
 #endif /* SE23_TEST_H */

@@ -51,7 +51,7 @@
 #include "se23/imu.h"
 #include "se23/se23.h"
 #include "se23/so3.h"
-#include "se23_test.h"
+#include "se23_rng.h"
 
 #define G 9.81
 #define CLOUD_MAX 3000 /* points per cloud written to the CSV */

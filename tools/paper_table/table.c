@@ -28,7 +28,7 @@
 #include "../montecarlo/paper_tool.h"
 #include "se23/preint.h"
 #include "se23/preint_unc.h"
-#include "se23_test.h"
+#include "se23_rng.h"
 #include "uav.h"
 
 #define HZ 100.0

@@ -18,7 +18,7 @@
 
 #include "se23/gauss.h"
 #include "se23/types.h"
-#include "se23_test.h"
+#include "se23_rng.h"
 
 typedef struct {
     double m[5][5];
