@@ -14,20 +14,6 @@ int se23_all_finite(const se23_real_t *x, int n)
     return 1;
 }
 
-void se23_v3_load(const se23_real_t *x, se23_vec3_t *a)
-{
-    for (int i = 0; i < 3; ++i) {
-        a->v[i] = x[i];
-    }
-}
-
-void se23_v3_store(const se23_vec3_t *a, se23_real_t *x)
-{
-    for (int i = 0; i < 3; ++i) {
-        x[i] = a->v[i];
-    }
-}
-
 se23_real_t se23_v3_dot(const se23_vec3_t *a, const se23_vec3_t *b)
 {
     return a->v[0] * b->v[0] + a->v[1] * b->v[1] + a->v[2] * b->v[2];

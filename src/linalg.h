@@ -12,10 +12,22 @@
 /** Nonzero if all n values are finite. */
 int se23_all_finite(const se23_real_t *x, int n);
 
-/** a = (x[0], x[1], x[2]): a 3-block of a flat array as a vector. */
-void se23_v3_load(const se23_real_t *x, se23_vec3_t *a);
+/** a = (x[0], x[1], x[2]): a 3-block of a flat array as a vector.
+ *  Inline: it sits in the per-column loops of the covariance products. */
+static inline void se23_v3_load(const se23_real_t *x, se23_vec3_t *a)
+{
+    a->v[0] = x[0];
+    a->v[1] = x[1];
+    a->v[2] = x[2];
+}
+
 /** (x[0], x[1], x[2]) = a. */
-void se23_v3_store(const se23_vec3_t *a, se23_real_t *x);
+static inline void se23_v3_store(const se23_vec3_t *a, se23_real_t *x)
+{
+    x[0] = a->v[0];
+    x[1] = a->v[1];
+    x[2] = a->v[2];
+}
 
 se23_real_t se23_v3_dot(const se23_vec3_t *a, const se23_vec3_t *b);
 /** out = a x b */
