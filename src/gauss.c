@@ -7,6 +7,7 @@
 
 #include "argcheck.h"
 #include "cov.h"
+#include "imu_step.h"
 #include "linalg.h"
 #include "se23/se23.h"
 #include "se23_math.h"
@@ -295,10 +296,7 @@ se23_status_t se23_gauss_predict(const se23_earth_model_t *model,
     se23_v3_axpy(&s->f_b, SE23_R(1), &g->b_a, &c.f_b);
     se23_pose_t U, T_next;
     se23_mat9x6_t B;
-    st = se23_imu_step(model, &g->T, &c, &T_next);
-    if (st == SE23_OK) {
-        st = se23_imu_increment(&c, &U);
-    }
+    st = se23_imu_step_ups(model, &g->T, &c, &T_next, &U);
     if (st == SE23_OK) {
         st = se23_gauss_input_jac(kind, &c.w_ib_b, &c.f_b, c.dt, &B);
     }

@@ -2,6 +2,7 @@
 #include "se23/imu.h"
 
 #include "argcheck.h"
+#include "imu_step.h"
 #include "linalg.h"
 #include "se23/se23.h"
 #include "se23/so3.h"
@@ -104,10 +105,19 @@ se23_status_t se23_imu_step(const se23_earth_model_t *model,
                             const se23_pose_t *T, const se23_imu_sample_t *s,
                             se23_pose_t *T_next)
 {
+    se23_pose_t ups;
+    return se23_imu_step_ups(model, T, s, T_next, &ups);
+}
+
+se23_status_t se23_imu_step_ups(const se23_earth_model_t *model,
+                                const se23_pose_t *T, const se23_imu_sample_t *s,
+                                se23_pose_t *T_next, se23_pose_t *ups)
+{
     SE23_CHECK_NOT_NULL(model);
     SE23_CHECK_NOT_NULL(T);
     SE23_CHECK_NOT_NULL(s);
     SE23_CHECK_NOT_NULL(T_next);
+    SE23_CHECK_NOT_NULL(ups);
     se23_status_t st = check_sample(s, model->dt_max);
     if (st != SE23_OK) {
         return st;
@@ -125,9 +135,10 @@ se23_status_t se23_imu_step(const se23_earth_model_t *model,
         }
         gamma = &gamma_dt;
     }
-    se23_pose_t ups;
-    exact_increment(s, &ups);
-    se23_imu_transition(gamma, T, &ups, s->dt, T_next);
+    se23_pose_t u;
+    exact_increment(s, &u);
+    se23_imu_transition(gamma, T, &u, s->dt, T_next);
+    *ups = u;
     return SE23_OK;
 }
 

@@ -13,6 +13,7 @@
 
 #include "se23/imu.h"
 #include "se23/se23.h"
+#include "imu_step.h"
 #include "se23/so3.h"
 #include "se23_test.h"
 
@@ -523,6 +524,46 @@ static void test_imu_increment_rejects_bad_samples(void **state)
     check_bad_samples(call_increment_euler, &u, sizeof u, SE23_CFG_DT_MAX);
 }
 
+/* The internal step used by covariance propagation returns the same state
+ * as se23_imu_step and the same increment as se23_imu_increment; on error
+ * it writes neither. */
+static void test_imu_step_ups_matches_step_and_increment(void **state)
+{
+    (void)state;
+    se23_earth_model_t m;
+    const se23_vec3_t g = {{0, 0, (se23_real_t)9.8}};
+    const se23_vec3_t w = {{(se23_real_t)5e-5, 0, (se23_real_t)-5e-5}};
+    assert_int_equal(se23_earth_model_init(&g, &w, SE23_R(0.01), SE23_R(0.03), &m), SE23_OK);
+    se23t_rng_t rng;
+    se23t_rng_seed(&rng, 77);
+    for (int n = 0; n < 20; ++n) {
+        se23_pose_t T, by_step, by_ups, ups, ups_ref;
+        se23_imu_sample_t s;
+        se23t_random_pose(&rng, 100.0, &T);
+        se23t_random_vec3(&rng, 2.0, &s.w_ib_b);
+        se23t_random_vec3(&rng, 20.0, &s.f_b);
+        s.dt = (se23_real_t)(n % 2 ? 0.01 : 0.02); /* cached and recomputed Gamma' */
+        assert_int_equal(se23_imu_step(&m, &T, &s, &by_step), SE23_OK);
+        assert_int_equal(se23_imu_step_ups(&m, &T, &s, &by_ups, &ups), SE23_OK);
+        assert_int_equal(se23_imu_increment(&s, &ups_ref), SE23_OK);
+        assert_pose_near(&by_ups, &by_step, 0);
+        assert_pose_near(&ups, &ups_ref, 0);
+    }
+    se23_pose_t T, out, ups, before;
+    se23_imu_sample_t bad = {{{0, 0, 0}}, {{0, 0, 0}}, SE23_R(0.5)}; /* dt > dt_max */
+    se23_identity(&T);
+    se23_identity(&out);
+    out.p.v[0] = 42;
+    ups = out;
+    before = out;
+    assert_int_equal(se23_imu_step_ups(&m, &T, &bad, &out, &ups), SE23_ERR_DT);
+    assert_pose_near(&out, &before, 0);
+    assert_pose_near(&ups, &before, 0);
+#if SE23_CFG_ARG_CHECKS
+    assert_int_equal(se23_imu_step_ups(&m, &T, &bad, &out, NULL), SE23_ERR_NULL);
+#endif
+}
+
 static void test_imu_step_rejects_bad_samples(void **state)
 {
     (void)state;
@@ -616,6 +657,7 @@ int main(void)
         cmocka_unit_test(test_imu_step_flat_is_paper_discrete2),
         cmocka_unit_test(test_imu_carried_conversions_invert),
         cmocka_unit_test(test_imu_increment_rejects_bad_samples),
+        cmocka_unit_test(test_imu_step_ups_matches_step_and_increment),
         cmocka_unit_test(test_imu_step_rejects_bad_samples),
         cmocka_unit_test(test_imu_step_rejects_bad_states),
         cmocka_unit_test(test_imu_null_arguments_return_err_null),
