@@ -20,6 +20,11 @@
  *   SE23_CFG_COV_TOL     Relative tolerance of the covariance checks
  *                        (symmetry and positive semidefiniteness, gauss.h).
  *                        Default 1e-5 (float) / 1e-9 (double).
+ *   SE23_CFG_DEEP_CHECKS 1: every call also re-proves the state it is handed
+ *                        (se23_gauss_check, se23_preint_unc_check: O(n^3)
+ *                        Cholesky of the covariance), for debugging.
+ *                        0: state the library produced is trusted (types.h,
+ *                        "Validation policy"). Default 0.
  */
 #ifndef SE23_CONFIG_H
 #define SE23_CONFIG_H
@@ -58,6 +63,14 @@
 #else
 #define SE23_CFG_COV_TOL 1e-5f
 #endif
+#endif
+
+#ifndef SE23_CFG_DEEP_CHECKS
+#define SE23_CFG_DEEP_CHECKS 0
+#endif
+
+#if (SE23_CFG_DEEP_CHECKS != 0) && (SE23_CFG_DEEP_CHECKS != 1)
+#error "SE23_CFG_DEEP_CHECKS must be 0 or 1"
 #endif
 
 #endif /* SE23_CONFIG_H */

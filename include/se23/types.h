@@ -76,12 +76,31 @@ typedef struct {
 
 /**
  * Result of every fallible function. On any value but SE23_OK the function
- * has written nothing to its outputs.
+ * has written nothing to its outputs; SE23_OK means every output is finite
+ * and valid (R in SO(3) within SE23_CFG_ROT_TOL, covariances symmetric and
+ * positive semidefinite).
+ *
+ * Validation policy: check what enters, trust what the library built.
+ *  - Checked on every call, O(n): what the caller hands in for that call:
+ *    IMU samples and dt, noise densities, measurements and their noise
+ *    covariance, poses and vectors passed to the Lie-group routines.
+ *  - Checked once, where it enters: a state or factor the caller builds
+ *    (se23_gauss_t, a covariance it sets). Call se23_gauss_check on it
+ *    before the first step; se23_preint_unc_reset starts factors valid.
+ *  - Trusted, not re-proved per sample: a state the library produced. It
+ *    stays valid by construction: covariances are symmetric by construction
+ *    (upper triangle computed, mirrored), positive semidefinite by the
+ *    update forms used, R re-orthonormalised after every product and
+ *    retraction. A result that would overflow is refused
+ *    (SE23_ERR_NONFINITE) before anything is stored.
+ *  - SE23_CFG_DEEP_CHECKS=1 (config.h) re-runs the deep checks
+ *    (se23_gauss_check, se23_preint_unc_check) inside every call that takes
+ *    a state, for debugging.
  */
 typedef enum {
     SE23_OK = 0,              /**< success */
     SE23_ERR_NULL = 1,        /**< a required pointer is NULL (SE23_CFG_ARG_CHECKS) */
-    SE23_ERR_NONFINITE = 2,   /**< an input holds NaN or Inf */
+    SE23_ERR_NONFINITE = 2,   /**< an input holds NaN or Inf, or a result would overflow */
     SE23_ERR_NOT_ROTATION = 3, /**< a matrix is not in SO(3) within SE23_CFG_ROT_TOL */
     SE23_ERR_DOMAIN = 4,      /**< input outside the function's domain (e.g. |phi| >= 2 pi for jl_inv) */
     SE23_ERR_DT = 5,          /**< time step <= 0 or above the configured maximum */
