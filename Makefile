@@ -27,7 +27,7 @@ LIB_CFLAGS := $(LIB_WARN) -O2 -Iinclude -Isrc -fstack-usage
 
 M4F_FLAGS := -mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard
 M7_FLAGS := -mcpu=cortex-m7 -mthumb -mfpu=fpv5-d16 -mfloat-abi=hard
-ARM_CFLAGS := -ffunction-sections -fdata-sections -fcallgraph-info=su
+ARM_CFLAGS := -ffunction-sections -fdata-sections -fcallgraph-info=su -ffp-contract=fast
 
 .PHONY: all lib cross check demo bench deps clean
 

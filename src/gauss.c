@@ -1,12 +1,12 @@
 /* Concentrated Gaussians on SE_2(3): F_k, covariance propagation with
  * optional bias states, the noise model and the carried <-> user conversion;
- * see gauss.h. Every covariance product goes through se23_cov_congruence
- * with a structured map (rotation blocks and shears), never a dense 9x9 or
- * 15x15 product. */
+ * see gauss.h. The per-sample covariance step is the block kernel of
+ * cov_step.h (rotation and shear factors of F_k, never a dense product). */
 #include "se23/gauss.h"
 
 #include "argcheck.h"
 #include "cov.h"
+#include "cov_step.h"
 #include "imu_step.h"
 #include "linalg.h"
 #include "se23/se23.h"
@@ -22,19 +22,18 @@ static se23_status_t dt_check(se23_real_t dt)
     return SE23_OK;
 }
 
-static se23_status_t noise_check(const se23_imu_noise_t *nz)
+/* The state a step is handed: n is checked (O(1)); the rest is trusted
+ * (types.h, "Validation policy") unless SE23_CFG_DEEP_CHECKS. */
+static se23_status_t state_check(const se23_gauss_t *g)
 {
-    const se23_real_t q[4] = {nz->gyro_noise, nz->accel_noise, nz->gyro_walk,
-                              nz->accel_walk};
-    if (!se23_all_finite(q, 4)) {
-        return SE23_ERR_NONFINITE;
-    }
-    for (int i = 0; i < 4; ++i) {
-        if (q[i] < SE23_R(0)) {
-            return SE23_ERR_DOMAIN;
-        }
+#if SE23_CFG_DEEP_CHECKS
+    return se23_gauss_check(g);
+#else
+    if (g->n != SE23_GAUSS_N_POSE && g->n != SE23_GAUSS_N_BIAS) {
+        return SE23_ERR_DIM;
     }
     return SE23_OK;
+#endif
 }
 
 void se23_gauss_fk_apply(const se23_pose_t *U, se23_real_t dt,
@@ -88,34 +87,6 @@ void se23_gauss_fk_mul(const se23_pose_t *U, se23_real_t dt,
     *Y = out;
 }
 
-/* Phi = F_k (n = 9) or [[F_k, B_k], [0, I]] (n = 15) as a map of R^n. */
-typedef struct {
-    const se23_pose_t *U;
-    se23_real_t dt;
-    const se23_mat9x6_t *B;
-    int n;
-} phi_ctx_t;
-
-static void phi_map(const void *ctx, const se23_real_t *x, se23_real_t *y)
-{
-    const phi_ctx_t *c = (const phi_ctx_t *)ctx;
-    se23_tangent_t a, b;
-    for (int i = 0; i < 9; ++i) {
-        a.v[i] = x[i];
-    }
-    se23_gauss_fk_apply(c->U, c->dt, &a, &b);
-    for (int i = 0; i < 9; ++i) {
-        se23_real_t s = b.v[i];
-        for (int k = 9; k < c->n; ++k) {
-            s += c->B->m[6 * i + (k - 9)] * x[k];
-        }
-        y[i] = s;
-    }
-    for (int k = 9; k < c->n; ++k) {
-        y[k] = x[k];
-    }
-}
-
 /* Q += B diag(qg I3, qa I3) B^T on the leading 9x9 block (stride). */
 static void add_input_noise(const se23_mat9x6_t *B, se23_real_t qg,
                             se23_real_t qa, se23_real_t *Q, int stride)
@@ -143,9 +114,10 @@ se23_status_t se23_gauss_input_noise(const se23_mat9x6_t *B,
     SE23_CHECK_NOT_NULL(B);
     SE23_CHECK_NOT_NULL(noise);
     SE23_CHECK_NOT_NULL(Q);
-    se23_status_t st = noise_check(noise);
+    se23_step_noise_t q;
+    se23_status_t st = dt_check(dt);
     if (st == SE23_OK) {
-        st = dt_check(dt);
+        st = se23_step_noise(noise, dt, &q);
     }
     if (st == SE23_OK && !se23_all_finite(B->m, 54)) {
         st = SE23_ERR_NONFINITE;
@@ -154,8 +126,7 @@ se23_status_t se23_gauss_input_noise(const se23_mat9x6_t *B,
         return st;
     }
     se23_mat9_t out = {{SE23_R(0)}};
-    add_input_noise(B, noise->gyro_noise * noise->gyro_noise / dt,
-                    noise->accel_noise * noise->accel_noise / dt, out.m, 9);
+    add_input_noise(B, q.qg, q.qa, out.m, 9);
     *Q = out;
     return SE23_OK;
 }
@@ -182,21 +153,21 @@ se23_status_t se23_gauss_cov_propagate(const se23_mat9_t *Sg,
     if (st != SE23_OK) {
         return st;
     }
-    se23_real_t P[S * S];
+    /* F_k S F_k^T by the kernel without input terms, then + Q, all in a
+     * local: S_next may alias S or Q. */
+    static const se23_input_blocks_t no_input; /* zero */
+    static const se23_step_noise_t no_noise;
+    se23_mat9_t P;
+    se23_cov_step(U, dt, &no_input, &no_noise, SE23_GAUSS_N_POSE, Sg->m, P.m, 9);
     for (int i = 0; i < 9; ++i) {
-        for (int j = 0; j < 9; ++j) {
-            P[S * i + j] = Sg->m[9 * i + j];
-        }
-    }
-    const phi_ctx_t ctx = {U, dt, NULL, 9};
-    se23_cov_congruence(phi_map, &ctx, 9, P, P);
-    for (int i = 0; i < 9; ++i) {
-        for (int j = 0; j < 9; ++j) {
+        for (int j = i; j < 9; ++j) {
             /* Q is symmetric within tolerance; use its upper triangle. */
-            const se23_real_t q = (j >= i) ? Q->m[9 * i + j] : Q->m[9 * j + i];
-            S_next->m[9 * i + j] = P[S * i + j] + q;
+            const se23_real_t x = P.m[9 * i + j] + Q->m[9 * i + j];
+            P.m[9 * i + j] = x;
+            P.m[9 * j + i] = x;
         }
     }
+    *S_next = P;
     return SE23_OK;
 }
 
@@ -216,30 +187,18 @@ se23_status_t se23_gauss_check(const se23_gauss_t *g)
     return se23_cov_check(g->P.m, g->n, S);
 }
 
-/* The covariance step of a checked state with checked inputs; cannot fail.
- * out may alias g. */
+/* out = g with its covariance stepped through one sample (cov_step.h),
+ * mean unchanged; checked inputs, cannot fail. out may alias g. */
 static void propagate_cov(const se23_gauss_t *g, const se23_pose_t *U,
-                          const se23_mat9x6_t *B, const se23_imu_noise_t *nz,
-                          se23_real_t dt, se23_gauss_t *out)
+                          const se23_input_blocks_t *Bt,
+                          const se23_step_noise_t *q, se23_real_t dt,
+                          se23_gauss_t *out)
 {
-    const int n = g->n;
-    const phi_ctx_t ctx = {U, dt, B, n};
-    se23_cov_congruence(phi_map, &ctx, n, g->P.m, out->P.m);
-    add_input_noise(B, nz->gyro_noise * nz->gyro_noise / dt,
-                    nz->accel_noise * nz->accel_noise / dt, out->P.m, S);
-    if (n == SE23_GAUSS_N_BIAS) {
-        const se23_real_t wg = nz->gyro_walk * nz->gyro_walk * dt;
-        const se23_real_t wa = nz->accel_walk * nz->accel_walk * dt;
-        for (int k = 0; k < 3; ++k) {
-            const int ig = (int)SE23_IDX_BG + k, ia = (int)SE23_IDX_BA + k;
-            out->P.m[S * ig + ig] += wg;
-            out->P.m[S * ia + ia] += wa;
-        }
-    }
+    se23_cov_step(U, dt, Bt, q, g->n, g->P.m, out->P.m, S);
     out->T = g->T;
     out->b_g = g->b_g;
     out->b_a = g->b_a;
-    out->n = n;
+    out->n = g->n;
 }
 
 se23_status_t se23_gauss_propagate(const se23_gauss_t *g, const se23_pose_t *U,
@@ -252,7 +211,8 @@ se23_status_t se23_gauss_propagate(const se23_gauss_t *g, const se23_pose_t *U,
     SE23_CHECK_NOT_NULL(B);
     SE23_CHECK_NOT_NULL(noise);
     SE23_CHECK_NOT_NULL(out);
-    se23_status_t st = se23_gauss_check(g);
+    se23_step_noise_t q;
+    se23_status_t st = state_check(g);
     if (st == SE23_OK) {
         st = dt_check(dt);
     }
@@ -263,12 +223,14 @@ se23_status_t se23_gauss_propagate(const se23_gauss_t *g, const se23_pose_t *U,
         st = SE23_ERR_NONFINITE;
     }
     if (st == SE23_OK) {
-        st = noise_check(noise);
+        st = se23_step_noise(noise, dt, &q);
     }
     if (st != SE23_OK) {
         return st;
     }
-    propagate_cov(g, U, B, noise, dt, out);
+    se23_input_blocks_t Bt;
+    se23_input_blocks_from(&U->R, B, &Bt);
+    propagate_cov(g, U, &Bt, &q, dt, out);
     return SE23_OK;
 }
 
@@ -284,9 +246,9 @@ se23_status_t se23_gauss_predict(const se23_earth_model_t *model,
     SE23_CHECK_NOT_NULL(s);
     SE23_CHECK_NOT_NULL(noise);
     SE23_CHECK_NOT_NULL(out);
-    se23_status_t st = se23_gauss_check(g);
-    if (st == SE23_OK) {
-        st = noise_check(noise);
+    se23_status_t st = state_check(g);
+    if (st == SE23_OK && kind != SE23_INPUT_JAC_EXACT && kind != SE23_INPUT_JAC_BASIC) {
+        st = SE23_ERR_DOMAIN;
     }
     if (st != SE23_OK) {
         return st;
@@ -295,15 +257,18 @@ se23_status_t se23_gauss_predict(const se23_earth_model_t *model,
     se23_v3_axpy(&s->w_ib_b, SE23_R(1), &g->b_g, &c.w_ib_b);
     se23_v3_axpy(&s->f_b, SE23_R(1), &g->b_a, &c.f_b);
     se23_pose_t U, T_next;
-    se23_mat9x6_t B;
-    st = se23_imu_step_ups(model, &g->T, &c, &T_next, &U);
+    se23_increment_parts_t parts;
+    se23_step_noise_t q;
+    st = se23_imu_step_ups(model, &g->T, &c, &T_next, &U, &parts);
     if (st == SE23_OK) {
-        st = se23_gauss_input_jac(kind, &c.w_ib_b, &c.f_b, c.dt, &B);
+        st = se23_step_noise(noise, c.dt, &q);
     }
     if (st != SE23_OK) {
         return st;
     }
-    propagate_cov(g, &U, &B, noise, c.dt, out);
+    se23_input_blocks_t Bt;
+    se23_input_blocks(kind, &parts, &U.R, &c.f_b, c.dt, &Bt);
+    propagate_cov(g, &U, &Bt, &q, c.dt, out);
     out->T = T_next;
     return SE23_OK;
 }
@@ -336,7 +301,7 @@ static se23_status_t convert(const se23_earth_model_t *model,
     SE23_CHECK_NOT_NULL(model);
     SE23_CHECK_NOT_NULL(g);
     SE23_CHECK_NOT_NULL(out);
-    se23_status_t st = se23_gauss_check(g);
+    se23_status_t st = state_check(g);
     if (st == SE23_OK && !se23_all_finite(model->w_ie_n.v, 3)) {
         st = SE23_ERR_NONFINITE;
     }

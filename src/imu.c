@@ -13,8 +13,7 @@
  * epsilons (relative) from model->dt: the difference is then rounding. */
 #define GAMMA_CACHE_ULPS SE23_R(4)
 
-/* Sample finite and 0 < dt <= dt_max. */
-static se23_status_t check_sample(const se23_imu_sample_t *s, se23_real_t dt_max)
+se23_status_t se23_imu_sample_check(const se23_imu_sample_t *s, se23_real_t dt_max)
 {
     if (!se23_all_finite(s->w_ib_b.v, 3) || !se23_all_finite(s->f_b.v, 3) ||
         !se23_is_finite(s->dt)) {
@@ -28,39 +27,42 @@ static se23_status_t check_sample(const se23_imu_sample_t *s, se23_real_t dt_max
 
 /* phi = w dt, the series coefficients at |phi|, and R = exp(phi). */
 static void rotation_increment(const se23_imu_sample_t *s, se23_vec3_t *phi,
-                               se23_so3_coeffs_t *c, se23_mat3_t *R)
+                               se23_real_t *theta, se23_so3_coeffs_t *c,
+                               se23_mat3_t *R)
 {
     se23_v3_scale(&s->w_ib_b, s->dt, phi);
-    se23_so3_coeffs(se23_sqrt(se23_v3_dot(phi, phi)), c);
+    *theta = se23_sqrt(se23_v3_dot(phi, phi));
+    se23_so3_coeffs(*theta, c);
     se23_m3_series(SE23_R(1), c->c1, c->c2, phi, R);
 }
 
-/* Exact Upsilon of a checked sample. */
-static void exact_increment(const se23_imu_sample_t *s, se23_pose_t *ups)
+void se23_imu_increment_parts(const se23_imu_sample_t *s, se23_pose_t *ups,
+                              se23_increment_parts_t *parts)
 {
-    se23_vec3_t phi;
-    se23_so3_coeffs_t c;
+    se23_increment_parts_t q;
     se23_pose_t out;
-    se23_mat3_t M;
-    rotation_increment(s, &phi, &c, &out.R);
-    se23_m3_series(SE23_R(1), c.c2, c.c3, &phi, &M); /* J(phi) */
-    se23_m3_mul_v3(&M, &s->f_b, &out.v);
+    rotation_increment(s, &q.th, &q.t, &q.c, &out.R);
+    se23_m3_series(SE23_R(1), q.c.c2, q.c.c3, &q.th, &q.J);
+    se23_m3_mul_v3(&q.J, &s->f_b, &out.v);
     se23_v3_scale(&out.v, s->dt, &out.v);
-    se23_m3_series(SE23_R(0.5), c.c3, c.c4, &phi, &M); /* H(phi) */
-    se23_m3_mul_v3(&M, &s->f_b, &out.p);
+    se23_m3_series(SE23_R(0.5), q.c.c3, q.c.c4, &q.th, &q.H);
+    se23_m3_mul_v3(&q.H, &s->f_b, &out.p);
     se23_v3_scale(&out.p, s->dt * s->dt, &out.p);
     *ups = out;
+    if (parts != NULL) {
+        *parts = q;
+    }
 }
 
 se23_status_t se23_imu_increment(const se23_imu_sample_t *s, se23_pose_t *ups)
 {
     SE23_CHECK_NOT_NULL(s);
     SE23_CHECK_NOT_NULL(ups);
-    se23_status_t st = check_sample(s, SE23_R(SE23_CFG_DT_MAX));
+    se23_status_t st = se23_imu_sample_check(s, SE23_R(SE23_CFG_DT_MAX));
     if (st != SE23_OK) {
         return st;
     }
-    exact_increment(s, ups);
+    se23_imu_increment_parts(s, ups, NULL);
     return SE23_OK;
 }
 
@@ -69,14 +71,15 @@ se23_status_t se23_imu_increment_euler(const se23_imu_sample_t *s,
 {
     SE23_CHECK_NOT_NULL(s);
     SE23_CHECK_NOT_NULL(ups);
-    se23_status_t st = check_sample(s, SE23_R(SE23_CFG_DT_MAX));
+    se23_status_t st = se23_imu_sample_check(s, SE23_R(SE23_CFG_DT_MAX));
     if (st != SE23_OK) {
         return st;
     }
     se23_vec3_t phi;
+    se23_real_t theta;
     se23_so3_coeffs_t c;
     se23_pose_t out;
-    rotation_increment(s, &phi, &c, &out.R);
+    rotation_increment(s, &phi, &theta, &c, &out.R);
     se23_v3_scale(&s->f_b, s->dt, &out.v);
     se23_v3_scale(&s->f_b, SE23_R(0.5) * s->dt * s->dt, &out.p);
     *ups = out;
@@ -105,24 +108,26 @@ se23_status_t se23_imu_step(const se23_earth_model_t *model,
                             const se23_pose_t *T, const se23_imu_sample_t *s,
                             se23_pose_t *T_next)
 {
+    SE23_CHECK_NOT_NULL(T);
+    se23_status_t st = se23_pose_check(T);
+    if (st != SE23_OK) {
+        return st;
+    }
     se23_pose_t ups;
-    return se23_imu_step_ups(model, T, s, T_next, &ups);
+    return se23_imu_step_ups(model, T, s, T_next, &ups, NULL);
 }
 
 se23_status_t se23_imu_step_ups(const se23_earth_model_t *model,
                                 const se23_pose_t *T, const se23_imu_sample_t *s,
-                                se23_pose_t *T_next, se23_pose_t *ups)
+                                se23_pose_t *T_next, se23_pose_t *ups,
+                                se23_increment_parts_t *parts)
 {
     SE23_CHECK_NOT_NULL(model);
     SE23_CHECK_NOT_NULL(T);
     SE23_CHECK_NOT_NULL(s);
     SE23_CHECK_NOT_NULL(T_next);
     SE23_CHECK_NOT_NULL(ups);
-    se23_status_t st = check_sample(s, model->dt_max);
-    if (st != SE23_OK) {
-        return st;
-    }
-    st = se23_pose_check(T);
+    se23_status_t st = se23_imu_sample_check(s, model->dt_max);
     if (st != SE23_OK) {
         return st;
     }
@@ -136,7 +141,7 @@ se23_status_t se23_imu_step_ups(const se23_earth_model_t *model,
         gamma = &gamma_dt;
     }
     se23_pose_t u;
-    exact_increment(s, &u);
+    se23_imu_increment_parts(s, &u, parts);
     se23_imu_transition(gamma, T, &u, s->dt, T_next);
     *ups = u;
     return SE23_OK;

@@ -1,20 +1,43 @@
 /**
  * @file imu_step.h
- * @brief Internal: the checked propagation step that also hands back the
- *        increment it used, so that covariance propagation (gauss.c)
- *        does not compute Upsilon a second time per sample.
+ * @brief Internal: the propagation step that also hands back the increment
+ *        it used and the pieces of it (series coefficients, J, H) that the
+ *        input matrix reuses, so that one filter prediction (gauss.c)
+ *        evaluates the SO(3) series once per sample.
  */
 #ifndef SE23_IMU_STEP_H
 #define SE23_IMU_STEP_H
 
 #include "se23/imu.h"
+#include "so3_series.h"
+
+/** What the exact increment of one sample computed on the way. */
+typedef struct {
+    se23_vec3_t th;       /**< w dt [rad] */
+    se23_real_t t;        /**< |th| */
+    se23_so3_coeffs_t c;  /**< c1..c4 at t */
+    se23_mat3_t J;        /**< J_l(th) */
+    se23_mat3_t H;        /**< H(th) */
+} se23_increment_parts_t;
+
+/** SE23_ERR_NONFINITE unless the sample is finite, SE23_ERR_DT unless
+ *  0 < dt <= dt_max. */
+se23_status_t se23_imu_sample_check(const se23_imu_sample_t *s, se23_real_t dt_max);
+
+/** ups = the exact Upsilon of a checked sample and, if parts is not NULL,
+ *  its parts. No checks. */
+void se23_imu_increment_parts(const se23_imu_sample_t *s, se23_pose_t *ups,
+                              se23_increment_parts_t *parts);
 
 /**
- * se23_imu_step, plus ups = Upsilon(s) (se23_imu_increment) on success.
- * Same checks and statuses as se23_imu_step; nothing written on error.
+ * se23_imu_step with the pose T trusted (not checked: a state the library
+ * produced, or one the caller checked), plus ups = Upsilon(s) and, if parts
+ * is not NULL, the increment's parts. The sample is checked as in
+ * se23_imu_step; nothing is written on error.
  */
 se23_status_t se23_imu_step_ups(const se23_earth_model_t *model,
                                 const se23_pose_t *T, const se23_imu_sample_t *s,
-                                se23_pose_t *T_next, se23_pose_t *ups);
+                                se23_pose_t *T_next, se23_pose_t *ups,
+                                se23_increment_parts_t *parts);
 
 #endif /* SE23_IMU_STEP_H */

@@ -1,6 +1,10 @@
 /* The input matrix B_k of one IMU sample (bias Jacobian of the exact
  * increment); see gauss.h, se23_gauss_input_jac.
  *
+ * Computed as Bt = diag(R, R, R) B (cov_step.h), whose blocks need no
+ * rotation: dt J(th), dt^2 D_J, dt^3 D_H, dt^2 H(th), J and H shared with
+ * the increment (imu_step.h).
+ *
  * Derivation. Upsilon(w, f) = (R, dt J(th) f, dt^2 H(th) f), th = w dt.
  * To first order log(Upsilon^-1 Upsilon') = (log(R^T R'), R^T dv, R^T dp).
  *  - exp(th + d) = exp(th) exp(Jr(th) d), so the rotation block is dt Jr(th).
@@ -25,6 +29,8 @@
 #include "se23/gauss.h"
 
 #include "argcheck.h"
+#include "cov_step.h"
+#include "imu_step.h"
 #include "linalg.h"
 #include "se23_math.h"
 #include "so3_series.h"
@@ -130,42 +136,43 @@ static void series_deriv(se23_real_t a1, se23_real_t a2, se23_real_t b1,
     }
 }
 
-/* Writes s A into rows 3 r.., columns 3 c.. of B. */
-static void put_block(se23_mat9x6_t *B, int r, int c, se23_real_t s,
-                      const se23_mat3_t *A)
+/* s A */
+static void scaled(se23_real_t s, const se23_mat3_t *A, se23_mat3_t *out)
 {
     for (int i = 0; i < 3; ++i) {
         for (int j = 0; j < 3; ++j) {
-            B->m[6 * (3 * r + i) + 3 * c + j] = s * A->m[i][j];
+            out->m[i][j] = s * A->m[i][j];
         }
     }
 }
 
-static void exact_jac(const se23_vec3_t *w, const se23_vec3_t *f,
-                      se23_real_t dt, se23_mat9x6_t *B)
+void se23_input_blocks(se23_input_jac_kind_t kind,
+                       const se23_increment_parts_t *q, const se23_mat3_t *R,
+                       const se23_vec3_t *f, se23_real_t dt,
+                       se23_input_blocks_t *Bt)
 {
-    se23_vec3_t th;
-    se23_v3_scale(w, dt, &th);
-    const se23_real_t t = se23_sqrt(se23_v3_dot(&th, &th));
-    se23_so3_coeffs_t c;
+    const se23_mat3_t zero = {{{SE23_R(0)}}};
+    Bt->blk[0][1] = zero;
+    if (kind == SE23_INPUT_JAC_BASIC) {
+        /* D^-1 dt I_{9,6}: dt R in the rotation and velocity rows. */
+        scaled(dt, R, &Bt->blk[0][0]);
+        Bt->blk[1][0] = zero;
+        scaled(dt, R, &Bt->blk[1][1]);
+        Bt->blk[2][0] = zero;
+        Bt->blk[2][1] = zero;
+        return;
+    }
     deriv_coeffs_t d;
-    se23_so3_coeffs(t, &c);
-    deriv_coeffs(t, &d);
-    se23_mat3_t R, Jr, H, DJ, DH, A;
-    se23_m3_series(SE23_R(1), c.c1, c.c2, &th, &R);
-    se23_m3_series(SE23_R(1), -c.c2, c.c3, &th, &Jr); /* Jr(th) = J(-th) */
-    se23_m3_series(SE23_R(0.5), c.c3, c.c4, &th, &H);
-    series_deriv(c.c2, c.c3, d.d2, d.d3, &th, f, &DJ);
-    series_deriv(c.c3, c.c4, d.d3, d.d4, &th, f, &DH);
+    se23_mat3_t D;
+    deriv_coeffs(q->t, &d);
     const se23_real_t dt2 = dt * dt;
-    put_block(B, 0, 0, dt, &Jr);
-    put_block(B, 1, 1, dt, &Jr);
-    se23_m3_mul_tn(&R, &DJ, &A);
-    put_block(B, 1, 0, dt2, &A);
-    se23_m3_mul_tn(&R, &DH, &A);
-    put_block(B, 2, 0, dt2 * dt, &A);
-    se23_m3_mul_tn(&R, &H, &A);
-    put_block(B, 2, 1, dt2, &A); /* block (0, 1) stays zero */
+    scaled(dt, &q->J, &Bt->blk[0][0]);
+    series_deriv(q->c.c2, q->c.c3, d.d2, d.d3, &q->th, f, &D);
+    scaled(dt2, &D, &Bt->blk[1][0]);
+    scaled(dt, &q->J, &Bt->blk[1][1]);
+    series_deriv(q->c.c3, q->c.c4, d.d3, d.d4, &q->th, f, &D);
+    scaled(dt2 * dt, &D, &Bt->blk[2][0]);
+    scaled(dt2, &q->H, &Bt->blk[2][1]);
 }
 
 se23_status_t se23_gauss_input_jac(se23_input_jac_kind_t kind,
@@ -182,19 +189,23 @@ se23_status_t se23_gauss_input_jac(se23_input_jac_kind_t kind,
     if (!(dt > SE23_R(0) && dt <= SE23_R(SE23_CFG_DT_MAX))) {
         return SE23_ERR_DT;
     }
-    se23_mat9x6_t out = {{SE23_R(0)}};
-    switch (kind) {
-    case SE23_INPUT_JAC_EXACT:
-        exact_jac(w_b, f_b, dt, &out);
-        break;
-    case SE23_INPUT_JAC_BASIC:
+    if (kind != SE23_INPUT_JAC_EXACT && kind != SE23_INPUT_JAC_BASIC) {
+        return SE23_ERR_DOMAIN;
+    }
+    if (kind == SE23_INPUT_JAC_BASIC) {
+        se23_mat9x6_t out = {{SE23_R(0)}};
         for (int i = 0; i < 6; ++i) {
             out.m[6 * i + i] = dt;
         }
-        break;
-    default:
-        return SE23_ERR_DOMAIN;
+        *B = out;
+        return SE23_OK;
     }
-    *B = out;
+    const se23_imu_sample_t s = {*w_b, *f_b, dt};
+    se23_pose_t U;
+    se23_increment_parts_t q;
+    se23_input_blocks_t Bt;
+    se23_imu_increment_parts(&s, &U, &q);
+    se23_input_blocks(kind, &q, &U.R, f_b, dt, &Bt);
+    se23_input_blocks_rotate(&U.R, &Bt, B);
     return SE23_OK;
 }

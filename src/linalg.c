@@ -64,18 +64,6 @@ void se23_m3_mul(const se23_mat3_t *A, const se23_mat3_t *B, se23_mat3_t *out)
     *out = C;
 }
 
-void se23_m3_mul_tn(const se23_mat3_t *A, const se23_mat3_t *B, se23_mat3_t *out)
-{
-    se23_mat3_t C;
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-            C.m[i][j] = A->m[0][i] * B->m[0][j] + A->m[1][i] * B->m[1][j] +
-                        A->m[2][i] * B->m[2][j];
-        }
-    }
-    *out = C;
-}
-
 void se23_m3_mul_nt(const se23_mat3_t *A, const se23_mat3_t *B, se23_mat3_t *out)
 {
     se23_mat3_t C;
@@ -83,17 +71,6 @@ void se23_m3_mul_nt(const se23_mat3_t *A, const se23_mat3_t *B, se23_mat3_t *out
         for (int j = 0; j < 3; ++j) {
             C.m[i][j] = A->m[i][0] * B->m[j][0] + A->m[i][1] * B->m[j][1] +
                         A->m[i][2] * B->m[j][2];
-        }
-    }
-    *out = C;
-}
-
-void se23_m3_transpose(const se23_mat3_t *A, se23_mat3_t *out)
-{
-    se23_mat3_t C;
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-            C.m[i][j] = A->m[j][i];
         }
     }
     *out = C;

@@ -41,11 +41,37 @@ void se23_v3_scale(const se23_vec3_t *a, se23_real_t s, se23_vec3_t *out);
 void se23_m3_identity(se23_mat3_t *out);
 /** out = A B */
 void se23_m3_mul(const se23_mat3_t *A, const se23_mat3_t *B, se23_mat3_t *out);
-/** out = A^T B */
-void se23_m3_mul_tn(const se23_mat3_t *A, const se23_mat3_t *B, se23_mat3_t *out);
+/** out = A^T B (27 multiply-adds). Inline, written out: it is the rotation
+ *  step of every covariance kernel. out may alias A or B. */
+static inline void se23_m3_mul_tn(const se23_mat3_t *A, const se23_mat3_t *B,
+                                  se23_mat3_t *out)
+{
+    se23_mat3_t C;
+    for (int i = 0; i < 3; ++i) {
+        const se23_real_t a0 = A->m[0][i], a1 = A->m[1][i], a2 = A->m[2][i];
+        C.m[i][0] = a0 * B->m[0][0] + a1 * B->m[1][0] + a2 * B->m[2][0];
+        C.m[i][1] = a0 * B->m[0][1] + a1 * B->m[1][1] + a2 * B->m[2][1];
+        C.m[i][2] = a0 * B->m[0][2] + a1 * B->m[1][2] + a2 * B->m[2][2];
+    }
+    *out = C;
+}
 /** out = A B^T */
 void se23_m3_mul_nt(const se23_mat3_t *A, const se23_mat3_t *B, se23_mat3_t *out);
-void se23_m3_transpose(const se23_mat3_t *A, se23_mat3_t *out);
+/** out = A^T; out may alias A. */
+static inline void se23_m3_transpose(const se23_mat3_t *A, se23_mat3_t *out)
+{
+    se23_mat3_t C;
+    C.m[0][0] = A->m[0][0];
+    C.m[0][1] = A->m[1][0];
+    C.m[0][2] = A->m[2][0];
+    C.m[1][0] = A->m[0][1];
+    C.m[1][1] = A->m[1][1];
+    C.m[1][2] = A->m[2][1];
+    C.m[2][0] = A->m[0][2];
+    C.m[2][1] = A->m[1][2];
+    C.m[2][2] = A->m[2][2];
+    *out = C;
+}
 /** out = A x */
 void se23_m3_mul_v3(const se23_mat3_t *A, const se23_vec3_t *x, se23_vec3_t *out);
 /** out = A^T x */

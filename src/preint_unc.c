@@ -5,6 +5,8 @@
 
 #include "argcheck.h"
 #include "cov.h"
+#include "cov_step.h"
+#include "imu_step.h"
 #include "linalg.h"
 #include "preint_classic.h"
 #include "se23/se23.h"
@@ -15,10 +17,9 @@ static int kind_known(se23_input_jac_kind_t kind)
     return kind == SE23_INPUT_JAC_EXACT || kind == SE23_INPUT_JAC_BASIC;
 }
 
-se23_status_t se23_preint_unc_reset(const se23_vec3_t *b_g,
-                                    const se23_vec3_t *b_a,
-                                    se23_input_jac_kind_t kind,
-                                    se23_preint_unc_t *fu)
+static se23_status_t reset(const se23_vec3_t *b_g, const se23_vec3_t *b_a,
+                           se23_input_jac_kind_t kind, int classic,
+                           se23_preint_unc_t *fu)
 {
     SE23_CHECK_NOT_NULL(b_g);
     SE23_CHECK_NOT_NULL(b_a);
@@ -34,6 +35,7 @@ se23_status_t se23_preint_unc_reset(const se23_vec3_t *b_g,
     fu->b_g = *b_g;
     fu->b_a = *b_a;
     fu->kind = kind;
+    fu->classic = classic;
     for (int i = 0; i < 81; ++i) {
         fu->P.m[i] = SE23_R(0);
     }
@@ -48,10 +50,26 @@ se23_status_t se23_preint_unc_reset(const se23_vec3_t *b_g,
     return SE23_OK;
 }
 
+se23_status_t se23_preint_unc_reset(const se23_vec3_t *b_g,
+                                    const se23_vec3_t *b_a,
+                                    se23_input_jac_kind_t kind,
+                                    se23_preint_unc_t *fu)
+{
+    return reset(b_g, b_a, kind, 0, fu);
+}
+
+se23_status_t se23_preint_unc_reset_classic(const se23_vec3_t *b_g,
+                                            const se23_vec3_t *b_a,
+                                            se23_input_jac_kind_t kind,
+                                            se23_preint_unc_t *fu)
+{
+    return reset(b_g, b_a, kind, 1, fu);
+}
+
 se23_status_t se23_preint_unc_check(const se23_preint_unc_t *fu)
 {
     SE23_CHECK_NOT_NULL(fu);
-    if (!kind_known(fu->kind)) {
+    if (!kind_known(fu->kind) || (fu->classic != 0 && fu->classic != 1)) {
         return SE23_ERR_DOMAIN;
     }
     const se23_preint_classic_t *c = &fu->cl;
@@ -80,37 +98,39 @@ se23_status_t se23_preint_unc_add(se23_preint_unc_t *fu,
     SE23_CHECK_NOT_NULL(fu);
     SE23_CHECK_NOT_NULL(s);
     SE23_CHECK_NOT_NULL(noise);
+    se23_step_noise_t q;
+#if SE23_CFG_DEEP_CHECKS
     se23_status_t st = se23_preint_unc_check(fu);
+    if (st == SE23_OK) {
+        st = se23_imu_sample_check(s, SE23_R(SE23_CFG_DT_MAX));
+    }
+#else
+    se23_status_t st = se23_imu_sample_check(s, SE23_R(SE23_CFG_DT_MAX));
+#endif
+    if (st == SE23_OK) {
+        st = se23_step_noise(noise, s->dt, &q);
+    }
     if (st != SE23_OK) {
         return st;
     }
     se23_imu_sample_t c = *s; /* corrected inputs */
     se23_v3_axpy(&s->w_ib_b, SE23_R(1), &fu->b_g, &c.w_ib_b);
     se23_v3_axpy(&s->f_b, SE23_R(1), &fu->b_a, &c.f_b);
-    se23_pose_t U;
-    se23_mat9x6_t B;
-    se23_mat9_t Q, P;
-    st = se23_imu_increment(&c, &U);
-    if (st == SE23_OK) {
-        st = se23_gauss_input_jac(fu->kind, &c.w_ib_b, &c.f_b, c.dt, &B);
-    }
-    if (st == SE23_OK) {
-        st = se23_gauss_input_noise(&B, noise, c.dt, &Q);
-    }
-    if (st == SE23_OK) {
-        st = se23_gauss_cov_propagate(&fu->P, &U, c.dt, &Q, &P);
-    }
-    if (st != SE23_OK) {
-        return st;
+    if (!se23_all_finite(c.w_ib_b.v, 3) || !se23_all_finite(c.f_b.v, 3)) {
+        return SE23_ERR_NONFINITE; /* finite reading + bias overflowed */
     }
     /* Nothing below can fail: update in place. */
-    fu->P = P;
-    se23_gauss_fk_mul(&U, c.dt, &fu->J, &fu->J);
-    for (int i = 0; i < 54; ++i) {
-        fu->J.m[i] += B.m[i];
+    se23_pose_t U;
+    se23_increment_parts_t parts;
+    se23_input_blocks_t Bt;
+    se23_imu_increment_parts(&c, &U, &parts);
+    se23_input_blocks(fu->kind, &parts, &U.R, &c.f_b, c.dt, &Bt);
+    se23_cov_step(&U, c.dt, &Bt, &q, SE23_GAUSS_N_POSE, fu->P.m, fu->P.m, 9);
+    se23_cov_jac_step(&U, c.dt, &Bt, &fu->J);
+    if (fu->classic) {
+        se23_preint_classic_step(&fu->cl, &fu->f.delta.R, &U.R, &c.w_ib_b,
+                                 &c.f_b, c.dt);
     }
-    se23_preint_classic_step(&fu->cl, &fu->f.delta.R, &U.R, &c.w_ib_b, &c.f_b,
-                             c.dt);
     se23_preint_add_increment(&fu->f, &U, c.dt);
     return SE23_OK;
 }
@@ -148,6 +168,9 @@ static se23_status_t correct(const se23_preint_unc_t *fu,
     }
     if (!se23_all_finite(b_g->v, 3) || !se23_all_finite(b_a->v, 3)) {
         return SE23_ERR_NONFINITE;
+    }
+    if (method == CLASSIC && !fu->classic) {
+        return SE23_ERR_DOMAIN;
     }
     se23_vec3_t dbg, dba;
     se23_v3_axpy(b_g, SE23_R(-1), &fu->b_g, &dbg);

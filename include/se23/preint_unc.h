@@ -54,7 +54,8 @@
  *
  * Functions index:
  *   se23_preint_unc_reset           empty factor at a bias estimate
- *   se23_preint_unc_add             one raw sample: Deltas, P, J, classical
+ *   se23_preint_unc_reset_classic   the same, also accumulating Forster's Jacobians
+ *   se23_preint_unc_add             one raw sample: Deltas, P, J (, classical)
  *   se23_preint_unc_check           validate a factor
  *   se23_preint_unc_correct         Delta(bbar) exp(J db), paper eq. biascor
  *   se23_preint_unc_correct_classic Forster et al.'s first-order correction
@@ -93,14 +94,18 @@ typedef struct {
     se23_vec3_t b_g;            /**< gyro bias estimate bbar_g [rad/s] (added to w_meas) */
     se23_vec3_t b_a;            /**< accel bias estimate bbar_a [m/s^2] (added to f_meas) */
     se23_input_jac_kind_t kind; /**< input matrix of J and of the noise */
+    int classic;                /**< nonzero: cl is accumulated (se23_preint_unc_reset_classic) */
     se23_mat9_t P;              /**< covariance of xi, Delta_true = Delta exp(xi) */
     se23_mat9x6_t J;            /**< bias Jacobian: d = J db [s] */
-    se23_preint_classic_t cl;   /**< classical Jacobians, for comparison */
+    se23_preint_classic_t cl;   /**< classical Jacobians, for comparison (zero unless classic) */
 } se23_preint_unc_t;
 
 /**
  * fu = the empty factor at the bias estimate (b_g, b_a): Deltas (I, 0, 0),
- * Delta t = 0, P = 0, J = 0, classical Jacobians 0 (J_0 = 0, DESIGN.md).
+ * Delta t = 0, P = 0, J = 0 (J_0 = 0, DESIGN.md), classical Jacobians 0 and
+ * not accumulated (se23_preint_unc_reset_classic for those). A factor
+ * starts valid here and stays valid through se23_preint_unc_add, which
+ * does not re-check it (types.h, "Validation policy").
  * @param b_g  gyro bias estimate [rad/s]
  * @param b_a  accel bias estimate [m/s^2]
  * @param kind input matrix for J and the noise (gauss.h)
@@ -112,24 +117,39 @@ se23_status_t se23_preint_unc_reset(const se23_vec3_t *b_g,
                                     se23_preint_unc_t *fu);
 
 /**
+ * As se23_preint_unc_reset, for a factor that also accumulates the
+ * classical Jacobians of Forster et al. (file comment), for comparison:
+ * about 300 more multiply-adds per sample. Only such a factor can be
+ * corrected with se23_preint_unc_correct_classic.
+ */
+se23_status_t se23_preint_unc_reset_classic(const se23_vec3_t *b_g,
+                                            const se23_vec3_t *b_a,
+                                            se23_input_jac_kind_t kind,
+                                            se23_preint_unc_t *fu);
+
+/**
  * Adds one raw sample s (sensor readings; corrected with the factor's bias
  * estimate): the Deltas by se23_preint_add_increment with the exact
  * increment of the corrected sample; P+ = F_k P F_k^T + B_k N B_k^T
  * (paper eq. riccati, gauss.h noise model, bias walks unused); J+ = F_k J +
- * B_k (paper eq. biascor); the classical Jacobians (file comment).
+ * B_k (paper eq. biascor), both by the block kernels of gauss.h's
+ * factored F_k; the classical Jacobians if the factor was reset with
+ * se23_preint_unc_reset_classic (file comment). The sample and the noise
+ * are checked; the factor is trusted (it comes from reset and add), and
+ * re-checked with se23_preint_unc_check only if SE23_CFG_DEEP_CHECKS.
  * @param noise white-noise densities of the IMU (gauss.h)
- * @return SE23_ERR_NONFINITE (s, noise, fu), SE23_ERR_DT (s->dt outside
- *         (0, SE23_CFG_DT_MAX], fu->f.dt < 0), SE23_ERR_DOMAIN (negative
- *         density, unknown kind), SE23_ERR_NOT_ROTATION (Delta R),
- *         SE23_ERR_NOT_SYMMETRIC or SE23_ERR_NOT_PSD (P); fu is unchanged
- *         on error.
+ * @return SE23_ERR_NONFINITE (s, noise), SE23_ERR_DT (s->dt outside
+ *         (0, SE23_CFG_DT_MAX]), SE23_ERR_DOMAIN (negative density); with
+ *         SE23_CFG_DEEP_CHECKS also the statuses of se23_preint_unc_check;
+ *         fu is unchanged on error.
  */
 se23_status_t se23_preint_unc_add(se23_preint_unc_t *fu,
                                   const se23_imu_sample_t *s,
                                   const se23_imu_noise_t *noise);
 
 /**
- * Checks a factor: kind known, biases, J and the classical Jacobians
+ * Checks a factor (the deep check, for callers who want it): kind known,
+ * classic 0 or 1, biases, J and the classical Jacobians
  * finite, Deltas an extended pose (finite, Delta R in SO(3)), Delta t finite
  * and >= 0, P a valid covariance (gauss.h, "Validation").
  * @return SE23_OK, SE23_ERR_DOMAIN, SE23_ERR_NONFINITE,
@@ -158,7 +178,8 @@ se23_status_t se23_preint_unc_correct(const se23_preint_unc_t *fu,
  * (file comment) to the new bias estimate (b_g, b_a):
  * Delta R exp(dR/dbg db_g), Delta V + dV/dbg db_g + dV/dba db_a,
  * Delta X + dX/dbg db_g + dX/dba db_a; out.dt and out.n copied.
- * @return as se23_preint_unc_correct.
+ * @return as se23_preint_unc_correct, and SE23_ERR_DOMAIN if fu does not
+ *         accumulate the classical Jacobians (se23_preint_unc_reset_classic).
  */
 se23_status_t se23_preint_unc_correct_classic(const se23_preint_unc_t *fu,
                                               const se23_vec3_t *b_g,

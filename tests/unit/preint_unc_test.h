@@ -76,7 +76,8 @@ static inline void bias_vecs(const double b[6], se23_vec3_t *bg, se23_vec3_t *ba
     }
 }
 
-/* fu = the factor of n raw samples (db = 0) at the estimate BBAR. */
+/* fu = the factor of n raw samples (db = 0) at the estimate BBAR, with the
+ * classical Jacobians (se23_preint_unc_reset_classic). */
 static inline void make_factor(int n, se23_input_jac_kind_t kind,
                         const se23_imu_noise_t *noise, se23_preint_unc_t *fu)
 {
@@ -84,7 +85,7 @@ static inline void make_factor(int n, se23_input_jac_kind_t kind,
     se23_vec3_t bg, ba;
     bias_vecs(BBAR, &bg, &ba);
     memset(fu, 0, sizeof *fu); /* padding too: the tests compare bytes */
-    assert_int_equal(se23_preint_unc_reset(&bg, &ba, kind, fu), SE23_OK);
+    assert_int_equal(se23_preint_unc_reset_classic(&bg, &ba, kind, fu), SE23_OK);
     for (int k = 0; k < n; ++k) {
         const se23_imu_sample_t s = raw_sample(k, zero);
         assert_int_equal(se23_preint_unc_add(fu, &s, noise), SE23_OK);

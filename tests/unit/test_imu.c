@@ -544,10 +544,21 @@ static void test_imu_step_ups_matches_step_and_increment(void **state)
         se23t_random_vec3(&rng, 20.0, &s.f_b);
         s.dt = (se23_real_t)(n % 2 ? 0.01 : 0.02); /* cached and recomputed Gamma' */
         assert_int_equal(se23_imu_step(&m, &T, &s, &by_step), SE23_OK);
-        assert_int_equal(se23_imu_step_ups(&m, &T, &s, &by_ups, &ups), SE23_OK);
+        se23_increment_parts_t parts;
+        assert_int_equal(se23_imu_step_ups(&m, &T, &s, &by_ups, &ups, &parts), SE23_OK);
         assert_int_equal(se23_imu_increment(&s, &ups_ref), SE23_OK);
         assert_pose_near(&by_ups, &by_step, 0);
         assert_pose_near(&ups, &ups_ref, 0);
+        /* The parts are the series the increment was built from. */
+        se23_mat3_t Jl, Hs;
+        se23_vec3_t th;
+        for (int k = 0; k < 3; ++k) {
+            th.v[k] = s.dt * s.w_ib_b.v[k];
+        }
+        assert_int_equal(se23_so3_jl(&th, &Jl), SE23_OK);
+        assert_int_equal(se23_so3_h(&th, &Hs), SE23_OK);
+        assert_mat3_near(&parts.J, &Jl, 0);
+        assert_mat3_near(&parts.H, &Hs, 0);
     }
     se23_pose_t T, out, ups, before;
     se23_imu_sample_t bad = {{{0, 0, 0}}, {{0, 0, 0}}, SE23_R(0.5)}; /* dt > dt_max */
@@ -556,11 +567,11 @@ static void test_imu_step_ups_matches_step_and_increment(void **state)
     out.p.v[0] = 42;
     ups = out;
     before = out;
-    assert_int_equal(se23_imu_step_ups(&m, &T, &bad, &out, &ups), SE23_ERR_DT);
+    assert_int_equal(se23_imu_step_ups(&m, &T, &bad, &out, &ups, NULL), SE23_ERR_DT);
     assert_pose_near(&out, &before, 0);
     assert_pose_near(&ups, &before, 0);
 #if SE23_CFG_ARG_CHECKS
-    assert_int_equal(se23_imu_step_ups(&m, &T, &bad, &out, NULL), SE23_ERR_NULL);
+    assert_int_equal(se23_imu_step_ups(&m, &T, &bad, &out, NULL, NULL), SE23_ERR_NULL);
 #endif
 }
 

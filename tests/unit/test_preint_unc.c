@@ -108,6 +108,7 @@ static void test_preint_unc_reset_gives_empty_factor(void **state)
     assert_memory_equal(&fu.b_g, &bg, sizeof bg);
     assert_memory_equal(&fu.b_a, &ba, sizeof ba);
     assert_int_equal(fu.kind, SE23_INPUT_JAC_BASIC);
+    assert_int_equal(fu.classic, 0);
     const se23_real_t *blocks[3] = {fu.P.m, fu.J.m, &fu.cl.dR_dbg.m[0][0]};
     const int sizes[3] = {81, 54, 9};
     for (int b = 0; b < 3; ++b) {
@@ -123,6 +124,41 @@ static void test_preint_unc_reset_gives_empty_factor(void **state)
         }
     }
     assert_int_equal(se23_preint_unc_check(&fu), SE23_OK);
+}
+
+/* The classical Jacobians are opt-in: without them a factor has the same
+ * Deltas, P and J bit for bit, zero classical Jacobians, and refuses the
+ * classical correction. */
+static void test_preint_unc_classic_is_opt_in(void **state)
+{
+    (void)state;
+    se23_preint_unc_t with, without;
+    make_factor(40, SE23_INPUT_JAC_EXACT, &NOISE, &with);
+    se23_vec3_t bg, ba;
+    bias_vecs(BBAR, &bg, &ba);
+    memset(&without, 0, sizeof without);
+    assert_int_equal(se23_preint_unc_reset(&bg, &ba, SE23_INPUT_JAC_EXACT, &without), SE23_OK);
+    static const double zero[6] = {0};
+    for (int k = 0; k < 40; ++k) {
+        const se23_imu_sample_t s = raw_sample(k, zero);
+        assert_int_equal(se23_preint_unc_add(&without, &s, &NOISE), SE23_OK);
+    }
+    assert_int_equal(with.classic, 1);
+    assert_int_equal(without.classic, 0);
+    assert_memory_equal(&with.f, &without.f, sizeof with.f);
+    assert_memory_equal(&with.P, &without.P, sizeof with.P);
+    assert_memory_equal(&with.J, &without.J, sizeof with.J);
+    const se23_real_t *cl = &without.cl.dR_dbg.m[0][0];
+    for (size_t i = 0; i < sizeof without.cl / sizeof *cl; ++i) {
+        assert_true(cl[i] == SE23_R(0));
+    }
+    assert_false(with.cl.dV_dba.m[0][0] == SE23_R(0));
+    se23_preint_t out, out0;
+    memset(&out, SENTINEL, sizeof out);
+    out0 = out;
+    assert_int_equal(se23_preint_unc_correct_classic(&without, &bg, &ba, &out), SE23_ERR_DOMAIN);
+    assert_memory_equal(&out, &out0, sizeof out);
+    assert_int_equal(se23_preint_unc_correct_classic(&with, &bg, &ba, &out), SE23_OK);
 }
 
 static void test_preint_unc_add_deltas_equal_preint_add(void **state)
@@ -475,7 +511,12 @@ static void expect_rejected(void (*plant)(se23_preint_unc_t *), se23_status_t ex
     static const double zero[6] = {0};
     const se23_imu_sample_t s = raw_sample(30, zero);
     assert_int_equal(se23_preint_unc_check(&fu), expect);
+#if SE23_CFG_DEEP_CHECKS
+    /* add trusts the factor it built, except in the debugging build. */
     assert_int_equal(se23_preint_unc_add(&fu, &s, &NOISE), expect);
+#else
+    (void)s;
+#endif
     se23_preint_t out, out0;
     memset(&out, SENTINEL, sizeof out);
     out0 = out;
@@ -496,6 +537,7 @@ static void plant_bad_rotation(se23_preint_unc_t *fu) { fu->f.delta.R.m[0][0] +=
 static void plant_negative_dt(se23_preint_unc_t *fu) { fu->f.dt = SE23_R(-1); }
 static void plant_nan_dt(se23_preint_unc_t *fu) { fu->f.dt = (se23_real_t)NAN; }
 static void plant_bad_kind(se23_preint_unc_t *fu) { fu->kind = (se23_input_jac_kind_t)3; }
+static void plant_bad_classic(se23_preint_unc_t *fu) { fu->classic = 2; }
 
 static void test_preint_unc_corrupted_factor_is_rejected_untouched(void **state)
 {
@@ -511,6 +553,7 @@ static void test_preint_unc_corrupted_factor_is_rejected_untouched(void **state)
     expect_rejected(plant_negative_dt, SE23_ERR_DT);
     expect_rejected(plant_nan_dt, SE23_ERR_NONFINITE);
     expect_rejected(plant_bad_kind, SE23_ERR_DOMAIN);
+    expect_rejected(plant_bad_classic, SE23_ERR_DOMAIN);
 }
 
 static void test_preint_unc_correct_rejects_bad_bias_untouched(void **state)
@@ -574,6 +617,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_preint_unc_reset_gives_empty_factor),
+        cmocka_unit_test(test_preint_unc_classic_is_opt_in),
         cmocka_unit_test(test_preint_unc_add_deltas_equal_preint_add),
         cmocka_unit_test(test_preint_unc_bias_jacobian_matches_central_differences),
         cmocka_unit_test(test_preint_unc_cov_matches_step_by_step_propagation),

@@ -1,0 +1,85 @@
+/**
+ * @file cov_step.h
+ * @brief Internal: the per-sample covariance kernels of gauss.h and
+ *        preint_unc.h, by 3x3 blocks in the factored form of the transition
+ *        (no dense products, no callbacks). Not part of the public API.
+ *
+ * Factored transition (paper eq. riccati, DESIGN.md section 3). With the
+ * increment U = (R, v, p) of one sample over dt, F_k = Ad_{U^-1} F splits
+ * into a rotation and a shear,
+ *   F_k = D G,   D = diag(R^T, R^T, R^T),
+ *   G = [[I, 0, 0], [-v^, I, 0], [-p^, dt I, I]],
+ * and the input matrix of gauss.h splits the same way, B_k = D Bt, since its
+ * rows are R^T times the derivatives of the increment's (R, v, p) (see
+ * input_jac.c). With bias states, Phi = diag(D, I6) [[G, Bt], [0, I6]]. So
+ *   P+ = diag(D, I6) ( [[G, Bt], [0, I6]] P [[G, Bt], [0, I6]]^T
+ *                      + diag(Bt N Bt^T, W) ) diag(D, I6)^T,
+ * N = diag(qg I3, qa I3) the per-sample white noise, W = diag(wg I3, wa I3)
+ * the bias random walk. The kernels evaluate this by blocks, upper triangle
+ * only, and mirror it: P+ is exactly symmetric, and it is positive
+ * semidefinite whenever P is, up to rounding of the congruence.
+ */
+#ifndef SE23_COV_STEP_H
+#define SE23_COV_STEP_H
+
+#include "imu_step.h"
+#include "se23/gauss.h"
+#include "se23/types.h"
+
+/** Bt, the 9x6 input matrix before the rotation D: blk[i][k] is block row i
+ *  (phi, nu, rho) and block column k (0: gyro, 1: accel). */
+typedef struct {
+    se23_mat3_t blk[3][2];
+} se23_input_blocks_t;
+
+/** Noise of one sample: white-noise variances of the sample averages,
+ *  qg = sg^2/dt, qa = sa^2/dt, and bias random walk, wg = qg_w^2 dt,
+ *  wa = qa_w^2 dt (gauss.h, "Noise discretisation"). */
+typedef struct {
+    se23_real_t qg, qa, wg, wa;
+} se23_step_noise_t;
+
+/**
+ * q = the per-sample noise of the model nz over dt (0 < dt, checked by the
+ * caller).
+ * @return SE23_ERR_NONFINITE or SE23_ERR_DOMAIN (a negative density);
+ *         q is written only on SE23_OK.
+ */
+se23_status_t se23_step_noise(const se23_imu_noise_t *nz, se23_real_t dt,
+                              se23_step_noise_t *q);
+
+/**
+ * out = Phi P Phi^T + diag(B_k N B_k^T, W) on the leading n x n blocks
+ * (n = 9 or 15, row stride `stride`), reading only P's upper triangle and
+ * writing both triangles of out (file comment). out may alias P. No
+ * checks; cannot fail.
+ */
+void se23_cov_step(const se23_pose_t *U, se23_real_t dt,
+                   const se23_input_blocks_t *Bt, const se23_step_noise_t *q,
+                   int n, const se23_real_t *P, se23_real_t *out, int stride);
+
+/** J <- F_k J + B_k = D (G J + Bt) in place (9x6, the bias Jacobian
+ *  recursion of paper eq. biascor). No checks. */
+void se23_cov_jac_step(const se23_pose_t *U, se23_real_t dt,
+                       const se23_input_blocks_t *Bt, se23_mat9x6_t *J);
+
+/**
+ * Bt of one sample from the parts of its exact increment U (kind EXACT or
+ * BASIC, already checked), f the corrected specific force:
+ *   EXACT: [[dt J, 0], [dt^2 D_J, dt J], [dt^3 D_H, dt^2 H]] (input_jac.c),
+ *   BASIC: diag(R, R, R) dt I_{9,6} = [[dt R, 0], [0, dt R], [0, 0]].
+ */
+void se23_input_blocks(se23_input_jac_kind_t kind,
+                       const se23_increment_parts_t *parts, const se23_mat3_t *R,
+                       const se23_vec3_t *f, se23_real_t dt,
+                       se23_input_blocks_t *Bt);
+
+/** B = D Bt, the public form of the input matrix (gauss.h). */
+void se23_input_blocks_rotate(const se23_mat3_t *R,
+                              const se23_input_blocks_t *Bt, se23_mat9x6_t *B);
+
+/** Bt = D^-1 B = diag(R, R, R) B, the blocks of a public input matrix. */
+void se23_input_blocks_from(const se23_mat3_t *R, const se23_mat9x6_t *B,
+                            se23_input_blocks_t *Bt);
+
+#endif /* SE23_COV_STEP_H */
