@@ -24,182 +24,69 @@
  * 880 / 1930 in all. */
 #include "cov_step.h"
 
+#include <string.h>
+
 #include "linalg.h"
 
 enum { PHI = 0, NU = 1, RHO = 2, GYR = 0, ACC = 1 };
 
-/* The 3x3 helpers below are written out (no loops) and inline: they are the
- * whole arithmetic of the step, and each call is a handful of
- * multiply-adds. */
-
 /* A = the 3x3 block of P at rows r0.., columns c0.. */
-static inline void blk_load(const se23_real_t *P, int stride, int r0, int c0,
-                            se23_mat3_t *A)
+static void blk_load(const se23_real_t *P, int stride, int r0, int c0,
+                     se23_mat3_t *A)
 {
-    const se23_real_t *r = &P[stride * r0 + c0];
-    A->m[0][0] = r[0];
-    A->m[0][1] = r[1];
-    A->m[0][2] = r[2];
-    r += stride;
-    A->m[1][0] = r[0];
-    A->m[1][1] = r[1];
-    A->m[1][2] = r[2];
-    r += stride;
-    A->m[2][0] = r[0];
-    A->m[2][1] = r[1];
-    A->m[2][2] = r[2];
+    const se23_real_t *a = &P[stride * r0 + c0], *b = a + stride, *c = b + stride;
+    A->m[0][0] = a[0];
+    A->m[0][1] = a[1];
+    A->m[0][2] = a[2];
+    A->m[1][0] = b[0];
+    A->m[1][1] = b[1];
+    A->m[1][2] = b[2];
+    A->m[2][0] = c[0];
+    A->m[2][1] = c[1];
+    A->m[2][2] = c[2];
 }
 
-/* Block (r0, c0) of P = A. */
-static inline void blk_store(se23_real_t *P, int stride, int r0, int c0,
-                             const se23_mat3_t *A)
+/* Block (r0, c0) of P = A; with mirror != 0 also block (c0, r0) = A^T. */
+static void blk_store(se23_real_t *P, int stride, int r0, int c0,
+                      const se23_mat3_t *A, int mirror)
 {
-    se23_real_t *r = &P[stride * r0 + c0];
-    r[0] = A->m[0][0];
-    r[1] = A->m[0][1];
-    r[2] = A->m[0][2];
-    r += stride;
-    r[0] = A->m[1][0];
-    r[1] = A->m[1][1];
-    r[2] = A->m[1][2];
-    r += stride;
-    r[0] = A->m[2][0];
-    r[1] = A->m[2][1];
-    r[2] = A->m[2][2];
-}
-
-/* Block (r0, c0) = A and block (c0, r0) = A^T, r0 != c0. */
-static inline void blk_store_pair(se23_real_t *P, int stride, int r0, int c0,
-                                  const se23_mat3_t *A)
-{
-    se23_mat3_t T;
-    blk_store(P, stride, r0, c0, A);
-    se23_m3_transpose(A, &T);
-    blk_store(P, stride, c0, r0, &T);
+    se23_real_t *a = &P[stride * r0 + c0], *b = a + stride, *c = b + stride;
+    a[0] = A->m[0][0];
+    a[1] = A->m[0][1];
+    a[2] = A->m[0][2];
+    b[0] = A->m[1][0];
+    b[1] = A->m[1][1];
+    b[2] = A->m[1][2];
+    c[0] = A->m[2][0];
+    c[1] = A->m[2][1];
+    c[2] = A->m[2][2];
+    if (mirror) {
+        a = &P[stride * c0 + r0];
+        b = a + stride;
+        c = b + stride;
+        a[0] = A->m[0][0];
+        a[1] = A->m[1][0];
+        a[2] = A->m[2][0];
+        b[0] = A->m[0][1];
+        b[1] = A->m[1][1];
+        b[2] = A->m[2][1];
+        c[0] = A->m[0][2];
+        c[1] = A->m[1][2];
+        c[2] = A->m[2][2];
+    }
 }
 
 /* Diagonal block at r0 = the upper triangle of A, mirrored. */
-static inline void blk_store_sym(se23_real_t *P, int stride, int r0,
-                                 const se23_mat3_t *A)
+static void blk_store_sym(se23_real_t *P, int stride, int r0,
+                          const se23_mat3_t *A)
 {
-    se23_real_t *r0p = &P[stride * r0 + r0], *r1p = r0p + stride,
-                *r2p = r1p + stride;
-    r0p[0] = A->m[0][0];
-    r0p[1] = r1p[0] = A->m[0][1];
-    r0p[2] = r2p[0] = A->m[0][2];
-    r1p[1] = A->m[1][1];
-    r1p[2] = r2p[1] = A->m[1][2];
-    r2p[2] = A->m[2][2];
-}
-
-/* C += s v^ A (column j of v^ A is v x A_j). 18 multiply-adds. */
-static inline void acc_skew_mul(se23_mat3_t *C, se23_real_t s,
-                                const se23_vec3_t *v, const se23_mat3_t *A)
-{
-    const se23_real_t x = s * v->v[0], y = s * v->v[1], z = s * v->v[2];
-    C->m[0][0] += y * A->m[2][0] - z * A->m[1][0];
-    C->m[1][0] += z * A->m[0][0] - x * A->m[2][0];
-    C->m[2][0] += x * A->m[1][0] - y * A->m[0][0];
-    C->m[0][1] += y * A->m[2][1] - z * A->m[1][1];
-    C->m[1][1] += z * A->m[0][1] - x * A->m[2][1];
-    C->m[2][1] += x * A->m[1][1] - y * A->m[0][1];
-    C->m[0][2] += y * A->m[2][2] - z * A->m[1][2];
-    C->m[1][2] += z * A->m[0][2] - x * A->m[2][2];
-    C->m[2][2] += x * A->m[1][2] - y * A->m[0][2];
-}
-
-/* C += A v^ (row i of A v^ is A_i x v). 18 multiply-adds. */
-static inline void acc_mul_skew(se23_mat3_t *C, const se23_mat3_t *A,
-                                const se23_vec3_t *v)
-{
-    const se23_real_t x = v->v[0], y = v->v[1], z = v->v[2];
-    C->m[0][0] += A->m[0][1] * z - A->m[0][2] * y;
-    C->m[0][1] += A->m[0][2] * x - A->m[0][0] * z;
-    C->m[0][2] += A->m[0][0] * y - A->m[0][1] * x;
-    C->m[1][0] += A->m[1][1] * z - A->m[1][2] * y;
-    C->m[1][1] += A->m[1][2] * x - A->m[1][0] * z;
-    C->m[1][2] += A->m[1][0] * y - A->m[1][1] * x;
-    C->m[2][0] += A->m[2][1] * z - A->m[2][2] * y;
-    C->m[2][1] += A->m[2][2] * x - A->m[2][0] * z;
-    C->m[2][2] += A->m[2][0] * y - A->m[2][1] * x;
-}
-
-/* C += s A. 9 multiply-adds. */
-static inline void acc_scaled(se23_mat3_t *C, se23_real_t s,
-                              const se23_mat3_t *A)
-{
-    C->m[0][0] += s * A->m[0][0];
-    C->m[0][1] += s * A->m[0][1];
-    C->m[0][2] += s * A->m[0][2];
-    C->m[1][0] += s * A->m[1][0];
-    C->m[1][1] += s * A->m[1][1];
-    C->m[1][2] += s * A->m[1][2];
-    C->m[2][0] += s * A->m[2][0];
-    C->m[2][1] += s * A->m[2][1];
-    C->m[2][2] += s * A->m[2][2];
-}
-
-/* a . b of two 3-rows. */
-static inline se23_real_t dot3(const se23_real_t *a, const se23_real_t *b)
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-/* a . (column j of B). */
-static inline se23_real_t dot3_col(const se23_real_t *a, const se23_mat3_t *B,
-                                   int j)
-{
-    return a[0] * B->m[0][j] + a[1] * B->m[1][j] + a[2] * B->m[2][j];
-}
-
-/* C += A B^T. 27 multiply-adds. */
-static inline void acc_mul_nt(se23_mat3_t *C, const se23_mat3_t *A,
-                              const se23_mat3_t *B)
-{
-    C->m[0][0] += dot3(A->m[0], B->m[0]);
-    C->m[0][1] += dot3(A->m[0], B->m[1]);
-    C->m[0][2] += dot3(A->m[0], B->m[2]);
-    C->m[1][0] += dot3(A->m[1], B->m[0]);
-    C->m[1][1] += dot3(A->m[1], B->m[1]);
-    C->m[1][2] += dot3(A->m[1], B->m[2]);
-    C->m[2][0] += dot3(A->m[2], B->m[0]);
-    C->m[2][1] += dot3(A->m[2], B->m[1]);
-    C->m[2][2] += dot3(A->m[2], B->m[2]);
-}
-
-/* C += A B. 27 multiply-adds. */
-static inline void acc_mul(se23_mat3_t *C, const se23_mat3_t *A,
-                           const se23_mat3_t *B)
-{
-    C->m[0][0] += dot3_col(A->m[0], B, 0);
-    C->m[0][1] += dot3_col(A->m[0], B, 1);
-    C->m[0][2] += dot3_col(A->m[0], B, 2);
-    C->m[1][0] += dot3_col(A->m[1], B, 0);
-    C->m[1][1] += dot3_col(A->m[1], B, 1);
-    C->m[1][2] += dot3_col(A->m[1], B, 2);
-    C->m[2][0] += dot3_col(A->m[2], B, 0);
-    C->m[2][1] += dot3_col(A->m[2], B, 1);
-    C->m[2][2] += dot3_col(A->m[2], B, 2);
-}
-
-/* out = R^T A R; for a diagonal block (sym != 0) only the upper triangle
- * of out is computed. 54 / 45 multiply-adds. */
-static inline void rotate(const se23_mat3_t *R, const se23_mat3_t *A, int sym,
-                          se23_mat3_t *out)
-{
-    se23_mat3_t T;
-    se23_m3_mul_tn(R, A, &T);
-    out->m[0][0] = dot3_col(T.m[0], R, 0);
-    out->m[0][1] = dot3_col(T.m[0], R, 1);
-    out->m[0][2] = dot3_col(T.m[0], R, 2);
-    out->m[1][1] = dot3_col(T.m[1], R, 1);
-    out->m[1][2] = dot3_col(T.m[1], R, 2);
-    out->m[2][2] = dot3_col(T.m[2], R, 2);
-    if (!sym) {
-        out->m[1][0] = dot3_col(T.m[1], R, 0);
-        out->m[2][0] = dot3_col(T.m[2], R, 0);
-        out->m[2][1] = dot3_col(T.m[2], R, 1);
-    }
+    se23_real_t *a = &P[stride * r0 + r0], *b = a + stride, *c = b + stride;
+    a[0] = A->m[0][0];
+    a[1] = b[0] = A->m[0][1];
+    a[2] = c[0] = A->m[0][2];
+    b[1] = A->m[1][1];
+    b[2] = c[1] = A->m[1][2];
+    c[2] = A->m[2][2];
 }
 
 /* The inputs every block of one step needs. */
@@ -208,6 +95,7 @@ typedef struct {
     se23_real_t dt;
     const se23_input_blocks_t *Bt;
     const se23_step_noise_t *q;
+    se23_input_blocks_t Bq;  /* Bt N: columns scaled by qg, qa */
     int bias;                /* nonzero for 15 states */
     se23_input_blocks_t Y;   /* G C (bias states only) */
     const se23_real_t *P;    /* P, upper triangle read */
@@ -215,31 +103,37 @@ typedef struct {
     int stride;
 } step_t;
 
-/* E += the input terms of pose block (i, j) (file comment). */
+/* E += the input terms of pose block (i, j), i <= j (file comment); the
+ * products with Bt's zero block (phi rows, accel columns) are skipped. */
 static void acc_input_terms(const step_t *s, int i, int j, se23_mat3_t *E)
 {
-    const se23_real_t qk[2] = {s->q->qg, s->q->qa};
     for (int k = GYR; k <= ACC; ++k) {
-        se23_mat3_t Zq = {{{SE23_R(0)}}};
-        if (s->bias) {
-            blk_load(s->out, s->stride, 3 * j, 9 + 3 * k, &Zq); /* Z_jk */
-            acc_mul_nt(E, &s->Y.blk[i][k], &s->Bt->blk[j][k]);
+        if (s->bias && !(j == PHI && k == ACC)) {
+            se23_m3_acc_mul_nt(E, &s->Y.blk[i][k], &s->Bt->blk[j][k]);
         }
-        acc_scaled(&Zq, qk[k], &s->Bt->blk[j][k]);
-        acc_mul_nt(E, &s->Bt->blk[i][k], &Zq);
+        if (i == PHI && k == ACC) {
+            continue;
+        }
+        if (s->bias) {
+            se23_mat3_t Zq; /* Z_jk + Bt_jk q_k */
+            blk_load(s->out, s->stride, 3 * j, 9 + 3 * k, &Zq);
+            se23_m3_axpy(&Zq, SE23_R(1), &s->Bq.blk[j][k], &Zq);
+            se23_m3_acc_mul_nt(E, &s->Bt->blk[i][k], &Zq);
+        } else {
+            se23_m3_acc_mul_nt(E, &s->Bt->blk[i][k], &s->Bq.blk[j][k]);
+        }
     }
 }
 
 /* Pose block (i, j) of P+ from its pre-rotation value A_ij. */
 static void finish_pose_block(const step_t *s, int i, int j, se23_mat3_t *Aij)
 {
-    se23_mat3_t out;
     acc_input_terms(s, i, j, Aij);
-    rotate(&s->U->R, Aij, i == j, &out);
+    se23_m3_congruence_tn(&s->U->R, Aij, i == j, Aij);
     if (i == j) {
-        blk_store_sym(s->out, s->stride, 3 * i, &out);
+        blk_store_sym(s->out, s->stride, 3 * i, Aij);
     } else {
-        blk_store_pair(s->out, s->stride, 3 * i, 3 * j, &out);
+        blk_store(s->out, s->stride, 3 * i, 3 * j, Aij, 1);
     }
 }
 
@@ -256,9 +150,9 @@ static void bias_cross_terms(step_t *s)
         blk_load(s->P, s->stride, 3, 9 + 3 * k, &c1);
         blk_load(s->P, s->stride, 6, 9 + 3 * k, Y2);
         *Y1 = c1;
-        acc_skew_mul(Y1, SE23_R(-1), v, Y0);
-        acc_scaled(Y2, s->dt, &c1);
-        acc_skew_mul(Y2, SE23_R(-1), p, Y0);
+        se23_m3_acc_skew_mul(Y1, SE23_R(-1), v, Y0);
+        se23_m3_axpy(Y2, s->dt, &c1, Y2);
+        se23_m3_acc_skew_mul(Y2, SE23_R(-1), p, Y0);
     }
     se23_mat3_t Bb[2][2];
     blk_load(s->P, s->stride, 9, 9, &Bb[GYR][GYR]);
@@ -268,9 +162,11 @@ static void bias_cross_terms(step_t *s)
     for (int i = PHI; i <= RHO; ++i) {
         for (int k = GYR; k <= ACC; ++k) {
             se23_mat3_t Z = s->Y.blk[i][k];
-            acc_mul(&Z, &s->Bt->blk[i][GYR], &Bb[GYR][k]);
-            acc_mul(&Z, &s->Bt->blk[i][ACC], &Bb[ACC][k]);
-            blk_store(s->out, s->stride, 3 * i, 9 + 3 * k, &Z);
+            se23_m3_acc_mul(&Z, &s->Bt->blk[i][GYR], &Bb[GYR][k]);
+            if (i != PHI) {
+                se23_m3_acc_mul(&Z, &s->Bt->blk[i][ACC], &Bb[ACC][k]);
+            }
+            blk_store(s->out, s->stride, 3 * i, 9 + 3 * k, &Z, 0);
         }
     }
 }
@@ -290,40 +186,40 @@ static void pose_blocks(const step_t *s)
     /* (2,2): W_2j = X_2j + dt X_1j - p^ X_0j; A_22 = W_20 p^ + dt W_21 + W_22. */
     se23_m3_transpose(&X02, &W0);
     se23_m3_transpose(&X01, &Aij);
-    acc_scaled(&W0, dt, &Aij);
-    acc_skew_mul(&W0, SE23_R(-1), p, &X00);
+    se23_m3_axpy(&W0, dt, &Aij, &W0);
+    se23_m3_acc_skew_mul(&W0, SE23_R(-1), p, &X00);
     se23_m3_transpose(&X12, &W1);
-    acc_scaled(&W1, dt, &X11);
-    acc_skew_mul(&W1, SE23_R(-1), p, &X01);
+    se23_m3_axpy(&W1, dt, &X11, &W1);
+    se23_m3_acc_skew_mul(&W1, SE23_R(-1), p, &X01);
     blk_load(s->P, s->stride, 6, 6, &W2);
-    acc_scaled(&W2, dt, &X12);
-    acc_skew_mul(&W2, SE23_R(-1), p, &X02);
+    se23_m3_axpy(&W2, dt, &X12, &W2);
+    se23_m3_acc_skew_mul(&W2, SE23_R(-1), p, &X02);
     Aij = W2;
-    acc_scaled(&Aij, dt, &W1);
-    acc_mul_skew(&Aij, &W0, p);
+    se23_m3_axpy(&Aij, dt, &W1, &Aij);
+    se23_m3_acc_mul_skew(&Aij, &W0, p);
     finish_pose_block(s, RHO, RHO, &Aij);
 
     /* (1,2) and (1,1): W_1j = X_1j - v^ X_0j. */
     se23_m3_transpose(&X01, &W0);
-    acc_skew_mul(&W0, SE23_R(-1), v, &X00);
+    se23_m3_acc_skew_mul(&W0, SE23_R(-1), v, &X00);
     W1 = X11;
-    acc_skew_mul(&W1, SE23_R(-1), v, &X01);
+    se23_m3_acc_skew_mul(&W1, SE23_R(-1), v, &X01);
     Aij = X12;
-    acc_skew_mul(&Aij, SE23_R(-1), v, &X02); /* W_12 */
-    acc_scaled(&Aij, dt, &W1);
-    acc_mul_skew(&Aij, &W0, p);
+    se23_m3_acc_skew_mul(&Aij, SE23_R(-1), v, &X02); /* W_12 */
+    se23_m3_axpy(&Aij, dt, &W1, &Aij);
+    se23_m3_acc_mul_skew(&Aij, &W0, p);
     finish_pose_block(s, NU, RHO, &Aij);
     Aij = W1;
-    acc_mul_skew(&Aij, &W0, v);
+    se23_m3_acc_mul_skew(&Aij, &W0, v);
     finish_pose_block(s, NU, NU, &Aij);
 
     /* Row 0: W_0j = X_0j. */
     Aij = X02;
-    acc_scaled(&Aij, dt, &X01);
-    acc_mul_skew(&Aij, &X00, p);
+    se23_m3_axpy(&Aij, dt, &X01, &Aij);
+    se23_m3_acc_mul_skew(&Aij, &X00, p);
     finish_pose_block(s, PHI, RHO, &Aij);
     Aij = X01;
-    acc_mul_skew(&Aij, &X00, v);
+    se23_m3_acc_mul_skew(&Aij, &X00, v);
     finish_pose_block(s, PHI, NU, &Aij);
     Aij = X00;
     finish_pose_block(s, PHI, PHI, &Aij);
@@ -338,7 +234,7 @@ static void bias_blocks(const step_t *s)
             se23_mat3_t Z, out;
             blk_load(s->out, st, 3 * i, 9 + 3 * k, &Z);
             se23_m3_mul_tn(&s->U->R, &Z, &out);
-            blk_store_pair(s->out, st, 3 * i, 9 + 3 * k, &out);
+            blk_store(s->out, st, 3 * i, 9 + 3 * k, &out, 1);
         }
     }
     for (int r = 9; r < 15; ++r) {
@@ -379,6 +275,10 @@ void se23_cov_step(const se23_pose_t *U, se23_real_t dt,
     s.Bt = Bt;
     s.q = q;
     s.bias = (n == SE23_GAUSS_N_BIAS);
+    for (int i = PHI; i <= RHO; ++i) {
+        se23_m3_scale(&Bt->blk[i][GYR], q->qg, &s.Bq.blk[i][GYR]);
+        se23_m3_scale(&Bt->blk[i][ACC], q->qa, &s.Bq.blk[i][ACC]);
+    }
     s.P = P;
     s.out = out;
     s.stride = stride;
@@ -400,15 +300,15 @@ void se23_cov_jac_step(const se23_pose_t *U, se23_real_t dt,
         blk_load(J->m, 6, 3, 3 * k, &J1);
         blk_load(J->m, 6, 6, 3 * k, &J2);
         /* G J + Bt, bottom row first (it reads J1 and J0 before they change). */
-        acc_scaled(&J2, dt, &J1);
-        acc_skew_mul(&J2, SE23_R(-1), &U->p, &J0);
-        acc_skew_mul(&J1, SE23_R(-1), &U->v, &J0);
+        se23_m3_axpy(&J2, dt, &J1, &J2);
+        se23_m3_acc_skew_mul(&J2, SE23_R(-1), &U->p, &J0);
+        se23_m3_acc_skew_mul(&J1, SE23_R(-1), &U->v, &J0);
         const se23_mat3_t *rows[3] = {&J0, &J1, &J2};
         for (int i = PHI; i <= RHO; ++i) {
-            se23_mat3_t t = *rows[i];
-            acc_scaled(&t, SE23_R(1), &Bt->blk[i][k]);
+            se23_mat3_t t;
+            se23_m3_axpy(rows[i], SE23_R(1), &Bt->blk[i][k], &t);
             se23_m3_mul_tn(&U->R, &t, &out);
-            blk_store(J->m, 6, 3 * i, 3 * k, &out);
+            blk_store(J->m, 6, 3 * i, 3 * k, &out, 0);
         }
     }
 }
@@ -421,20 +321,26 @@ void se23_input_blocks_rotate(const se23_mat3_t *R,
         for (int k = GYR; k <= ACC; ++k) {
             se23_mat3_t b;
             se23_m3_mul_tn(R, &Bt->blk[i][k], &b);
-            blk_store(out.m, 6, 3 * i, 3 * k, &b);
+            blk_store(out.m, 6, 3 * i, 3 * k, &b, 0);
         }
     }
     *B = out;
 }
 
-void se23_input_blocks_from(const se23_mat3_t *R, const se23_mat9x6_t *B,
-                            se23_input_blocks_t *Bt)
+int se23_input_blocks_from(const se23_mat3_t *R, const se23_mat9x6_t *B,
+                           se23_input_blocks_t *Bt)
 {
+    se23_mat3_t b;
+    blk_load(B->m, 6, 0, 3, &b);
+    const se23_mat3_t zero = {{{SE23_R(0)}}};
+    if (memcmp(&b, &zero, sizeof b) != 0) {
+        return 0;
+    }
     for (int i = PHI; i <= RHO; ++i) {
         for (int k = GYR; k <= ACC; ++k) {
-            se23_mat3_t b;
             blk_load(B->m, 6, 3 * i, 3 * k, &b);
             se23_m3_mul(R, &b, &Bt->blk[i][k]);
         }
     }
+    return 1;
 }

@@ -27,7 +27,9 @@
 #include "se23/types.h"
 
 /** Bt, the 9x6 input matrix before the rotation D: blk[i][k] is block row i
- *  (phi, nu, rho) and block column k (0: gyro, 1: accel). */
+ *  (phi, nu, rho) and block column k (0: gyro, 1: accel). blk[0][1] is
+ *  zero and never read: the rotation of an increment does not depend on
+ *  the accelerometer. */
 typedef struct {
     se23_mat3_t blk[3][2];
 } se23_input_blocks_t;
@@ -78,8 +80,9 @@ void se23_input_blocks(se23_input_jac_kind_t kind,
 void se23_input_blocks_rotate(const se23_mat3_t *R,
                               const se23_input_blocks_t *Bt, se23_mat9x6_t *B);
 
-/** Bt = D^-1 B = diag(R, R, R) B, the blocks of a public input matrix. */
-void se23_input_blocks_from(const se23_mat3_t *R, const se23_mat9x6_t *B,
-                            se23_input_blocks_t *Bt);
+/** Bt = D^-1 B = diag(R, R, R) B, the blocks of a public input matrix.
+ *  @return 0 (Bt unwritten) if B's rotation rows have accel columns. */
+int se23_input_blocks_from(const se23_mat3_t *R, const se23_mat9x6_t *B,
+                           se23_input_blocks_t *Bt);
 
 #endif /* SE23_COV_STEP_H */

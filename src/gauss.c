@@ -229,7 +229,9 @@ se23_status_t se23_gauss_propagate(const se23_gauss_t *g, const se23_pose_t *U,
         return st;
     }
     se23_input_blocks_t Bt;
-    se23_input_blocks_from(&U->R, B, &Bt);
+    if (!se23_input_blocks_from(&U->R, B, &Bt)) {
+        return SE23_ERR_DOMAIN;
+    }
     propagate_cov(g, U, &Bt, &q, dt, out);
     return SE23_OK;
 }

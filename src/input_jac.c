@@ -110,40 +110,33 @@ static void deriv_coeffs(se23_real_t t, deriv_coeffs_t *d)
     d->d4 = (SE23_R(4) - SE23_R(4) * c - t2 - t * s) / (t4 * t2);
 }
 
-/* D = d(S(th) f)/d(th) for S = a0 I + a1 W + a2 W^2 with a1' / t = b1,
- * a2' / t = b2 (file comment). */
+/* D = s d(S(th) f)/d(th) for S = a0 I + a1 W + a2 W^2 with a1' / t = b1,
+ * a2' / t = b2 (file comment), rearranged as
+ *   D/s = th (a2 f)^T + (u - 2 a2 f) th^T - a1 f^ + a2 (th.f) I,
+ *   u = b1 th x f + b2 th x (th x f).  [~40 multiply-adds] */
 static void series_deriv(se23_real_t a1, se23_real_t a2, se23_real_t b1,
                          se23_real_t b2, const se23_vec3_t *th,
-                         const se23_vec3_t *f, se23_mat3_t *D)
+                         const se23_vec3_t *f, se23_real_t s, se23_mat3_t *D)
 {
-    se23_vec3_t wf, wwf, u;
+    se23_vec3_t wf, wwf;
     se23_v3_cross(th, f, &wf);
     se23_v3_cross(th, &wf, &wwf);
-    se23_v3_scale(&wf, b1, &u);
-    se23_v3_axpy(&u, b2, &wwf, &u); /* u th^T: derivative of the coefficients */
-    se23_m3_skew(f, D);
-    const se23_real_t tf = se23_v3_dot(th, f);
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-            se23_real_t x = -a1 * D->m[i][j] + u.v[i] * th->v[j] +
-                            a2 * (th->v[i] * f->v[j] -
-                                  SE23_R(2) * f->v[i] * th->v[j]);
-            if (i == j) {
-                x += a2 * tf;
-            }
-            D->m[i][j] = x;
-        }
-    }
-}
-
-/* s A */
-static void scaled(se23_real_t s, const se23_mat3_t *A, se23_mat3_t *out)
-{
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-            out->m[i][j] = s * A->m[i][j];
-        }
-    }
+    const se23_real_t t0 = th->v[0], t1 = th->v[1], t2 = th->v[2];
+    const se23_real_t sa2 = s * a2, c = s * a1, d = sa2 * se23_v3_dot(th, f);
+    const se23_real_t af0 = sa2 * f->v[0], af1 = sa2 * f->v[1], af2 = sa2 * f->v[2];
+    const se23_real_t w0 = s * (b1 * wf.v[0] + b2 * wwf.v[0]) - SE23_R(2) * af0;
+    const se23_real_t w1 = s * (b1 * wf.v[1] + b2 * wwf.v[1]) - SE23_R(2) * af1;
+    const se23_real_t w2 = s * (b1 * wf.v[2] + b2 * wwf.v[2]) - SE23_R(2) * af2;
+    const se23_real_t cf0 = c * f->v[0], cf1 = c * f->v[1], cf2 = c * f->v[2];
+    D->m[0][0] = t0 * af0 + w0 * t0 + d;
+    D->m[0][1] = t0 * af1 + w0 * t1 + cf2;
+    D->m[0][2] = t0 * af2 + w0 * t2 - cf1;
+    D->m[1][0] = t1 * af0 + w1 * t0 - cf2;
+    D->m[1][1] = t1 * af1 + w1 * t1 + d;
+    D->m[1][2] = t1 * af2 + w1 * t2 + cf0;
+    D->m[2][0] = t2 * af0 + w2 * t0 + cf1;
+    D->m[2][1] = t2 * af1 + w2 * t1 - cf0;
+    D->m[2][2] = t2 * af2 + w2 * t2 + d;
 }
 
 void se23_input_blocks(se23_input_jac_kind_t kind,
@@ -155,24 +148,21 @@ void se23_input_blocks(se23_input_jac_kind_t kind,
     Bt->blk[0][1] = zero;
     if (kind == SE23_INPUT_JAC_BASIC) {
         /* D^-1 dt I_{9,6}: dt R in the rotation and velocity rows. */
-        scaled(dt, R, &Bt->blk[0][0]);
+        se23_m3_scale(R, dt, &Bt->blk[0][0]);
         Bt->blk[1][0] = zero;
-        scaled(dt, R, &Bt->blk[1][1]);
+        se23_m3_scale(R, dt, &Bt->blk[1][1]);
         Bt->blk[2][0] = zero;
         Bt->blk[2][1] = zero;
         return;
     }
     deriv_coeffs_t d;
-    se23_mat3_t D;
     deriv_coeffs(q->t, &d);
     const se23_real_t dt2 = dt * dt;
-    scaled(dt, &q->J, &Bt->blk[0][0]);
-    series_deriv(q->c.c2, q->c.c3, d.d2, d.d3, &q->th, f, &D);
-    scaled(dt2, &D, &Bt->blk[1][0]);
-    scaled(dt, &q->J, &Bt->blk[1][1]);
-    series_deriv(q->c.c3, q->c.c4, d.d3, d.d4, &q->th, f, &D);
-    scaled(dt2 * dt, &D, &Bt->blk[2][0]);
-    scaled(dt2, &q->H, &Bt->blk[2][1]);
+    se23_m3_scale(&q->J, dt, &Bt->blk[0][0]);
+    series_deriv(q->c.c2, q->c.c3, d.d2, d.d3, &q->th, f, dt2, &Bt->blk[1][0]);
+    se23_m3_scale(&q->J, dt, &Bt->blk[1][1]);
+    series_deriv(q->c.c3, q->c.c4, d.d3, d.d4, &q->th, f, dt2 * dt, &Bt->blk[2][0]);
+    se23_m3_scale(&q->H, dt2, &Bt->blk[2][1]);
 }
 
 se23_status_t se23_gauss_input_jac(se23_input_jac_kind_t kind,

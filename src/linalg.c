@@ -64,6 +64,39 @@ void se23_m3_mul(const se23_mat3_t *A, const se23_mat3_t *B, se23_mat3_t *out)
     *out = C;
 }
 
+void se23_m3_mul_tn(const se23_mat3_t *A, const se23_mat3_t *B, se23_mat3_t *out)
+{
+    const se23_real_t a00 = A->m[0][0], a01 = A->m[0][1], a02 = A->m[0][2];
+    const se23_real_t a10 = A->m[1][0], a11 = A->m[1][1], a12 = A->m[1][2];
+    const se23_real_t a20 = A->m[2][0], a21 = A->m[2][1], a22 = A->m[2][2];
+    const se23_real_t b00 = B->m[0][0], b01 = B->m[0][1], b02 = B->m[0][2];
+    const se23_real_t b10 = B->m[1][0], b11 = B->m[1][1], b12 = B->m[1][2];
+    const se23_real_t b20 = B->m[2][0], b21 = B->m[2][1], b22 = B->m[2][2];
+    out->m[0][0] = a00 * b00 + a10 * b10 + a20 * b20;
+    out->m[0][1] = a00 * b01 + a10 * b11 + a20 * b21;
+    out->m[0][2] = a00 * b02 + a10 * b12 + a20 * b22;
+    out->m[1][0] = a01 * b00 + a11 * b10 + a21 * b20;
+    out->m[1][1] = a01 * b01 + a11 * b11 + a21 * b21;
+    out->m[1][2] = a01 * b02 + a11 * b12 + a21 * b22;
+    out->m[2][0] = a02 * b00 + a12 * b10 + a22 * b20;
+    out->m[2][1] = a02 * b01 + a12 * b11 + a22 * b21;
+    out->m[2][2] = a02 * b02 + a12 * b12 + a22 * b22;
+}
+
+void se23_m3_transpose(const se23_mat3_t *A, se23_mat3_t *out)
+{
+    const se23_real_t a01 = A->m[0][1], a02 = A->m[0][2], a12 = A->m[1][2];
+    out->m[0][0] = A->m[0][0];
+    out->m[1][1] = A->m[1][1];
+    out->m[2][2] = A->m[2][2];
+    out->m[0][1] = A->m[1][0];
+    out->m[0][2] = A->m[2][0];
+    out->m[1][2] = A->m[2][1];
+    out->m[1][0] = a01;
+    out->m[2][0] = a02;
+    out->m[2][1] = a12;
+}
+
 void se23_m3_mul_nt(const se23_mat3_t *A, const se23_mat3_t *B, se23_mat3_t *out)
 {
     se23_mat3_t C;
@@ -94,14 +127,31 @@ void se23_m3_tmul_v3(const se23_mat3_t *A, const se23_vec3_t *x, se23_vec3_t *ou
     *out = y;
 }
 
+void se23_m3_scale(const se23_mat3_t *A, se23_real_t s, se23_mat3_t *out)
+{
+    out->m[0][0] = s * A->m[0][0];
+    out->m[0][1] = s * A->m[0][1];
+    out->m[0][2] = s * A->m[0][2];
+    out->m[1][0] = s * A->m[1][0];
+    out->m[1][1] = s * A->m[1][1];
+    out->m[1][2] = s * A->m[1][2];
+    out->m[2][0] = s * A->m[2][0];
+    out->m[2][1] = s * A->m[2][1];
+    out->m[2][2] = s * A->m[2][2];
+}
+
 void se23_m3_axpy(const se23_mat3_t *A, se23_real_t s, const se23_mat3_t *B,
                   se23_mat3_t *out)
 {
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-            out->m[i][j] = A->m[i][j] + s * B->m[i][j];
-        }
-    }
+    out->m[0][0] = A->m[0][0] + s * B->m[0][0];
+    out->m[0][1] = A->m[0][1] + s * B->m[0][1];
+    out->m[0][2] = A->m[0][2] + s * B->m[0][2];
+    out->m[1][0] = A->m[1][0] + s * B->m[1][0];
+    out->m[1][1] = A->m[1][1] + s * B->m[1][1];
+    out->m[1][2] = A->m[1][2] + s * B->m[1][2];
+    out->m[2][0] = A->m[2][0] + s * B->m[2][0];
+    out->m[2][1] = A->m[2][1] + s * B->m[2][1];
+    out->m[2][2] = A->m[2][2] + s * B->m[2][2];
 }
 
 void se23_m3_skew(const se23_vec3_t *v, se23_mat3_t *out)
@@ -140,4 +190,124 @@ void se23_m3_series(se23_real_t a0, se23_real_t a1, se23_real_t a2,
     out->m[2][0] = a2 * x * z - a1 * y;
     out->m[1][2] = a2 * y * z - a1 * x;
     out->m[2][1] = a2 * y * z + a1 * x;
+}
+
+/* The accumulating kernels: restrict lets every operand be loaded once,
+ * and c + a0 b0 + a1 b1 + a2 b2, left to right, is three fused
+ * multiply-adds where the target has them. */
+#define ACC_DOT(c, a0, b0, a1, b1, a2, b2) ((c) = (c) + (a0) * (b0) + (a1) * (b1) + (a2) * (b2))
+
+/* One row i of C += A B (t = 0) or C += A B^T (t = 1), written out. */
+#define ACC_ROW(C, A, B, i, t)                                                 \
+    do {                                                                       \
+        const se23_real_t a0_ = (A)->m[i][0], a1_ = (A)->m[i][1],             \
+                          a2_ = (A)->m[i][2];                                  \
+        ACC_DOT((C)->m[i][0], a0_, (t) ? (B)->m[0][0] : (B)->m[0][0], a1_,      \
+                (t) ? (B)->m[0][1] : (B)->m[1][0], a2_,                        \
+                (t) ? (B)->m[0][2] : (B)->m[2][0]);                            \
+        ACC_DOT((C)->m[i][1], a0_, (t) ? (B)->m[1][0] : (B)->m[0][1], a1_,      \
+                (t) ? (B)->m[1][1] : (B)->m[1][1], a2_,                        \
+                (t) ? (B)->m[1][2] : (B)->m[2][1]);                            \
+        ACC_DOT((C)->m[i][2], a0_, (t) ? (B)->m[2][0] : (B)->m[0][2], a1_,      \
+                (t) ? (B)->m[2][1] : (B)->m[1][2], a2_,                        \
+                (t) ? (B)->m[2][2] : (B)->m[2][2]);                            \
+    } while (0)
+
+void se23_m3_acc_mul(se23_mat3_t *restrict C, const se23_mat3_t *restrict A,
+                     const se23_mat3_t *restrict B)
+{
+    ACC_ROW(C, A, B, 0, 0);
+    ACC_ROW(C, A, B, 1, 0);
+    ACC_ROW(C, A, B, 2, 0);
+}
+
+void se23_m3_acc_mul_nt(se23_mat3_t *restrict C, const se23_mat3_t *restrict A,
+                        const se23_mat3_t *restrict B)
+{
+    ACC_ROW(C, A, B, 0, 1);
+    ACC_ROW(C, A, B, 1, 1);
+    ACC_ROW(C, A, B, 2, 1);
+}
+
+/* Column j of v^ A is v x A_j. */
+#define SKEW_MUL_COL(C, A, j, x, y, z)                                         \
+    do {                                                                       \
+        const se23_real_t a0_ = (A)->m[0][j], a1_ = (A)->m[1][j],             \
+                          a2_ = (A)->m[2][j];                                  \
+        (C)->m[0][j] = (C)->m[0][j] + (y) * a2_ - (z) * a1_;                   \
+        (C)->m[1][j] = (C)->m[1][j] + (z) * a0_ - (x) * a2_;                   \
+        (C)->m[2][j] = (C)->m[2][j] + (x) * a1_ - (y) * a0_;                   \
+    } while (0)
+
+void se23_m3_acc_skew_mul(se23_mat3_t *restrict C, se23_real_t s,
+                          const se23_vec3_t *restrict v, const se23_mat3_t *restrict A)
+{
+    const se23_real_t x = s * v->v[0], y = s * v->v[1], z = s * v->v[2];
+    SKEW_MUL_COL(C, A, 0, x, y, z);
+    SKEW_MUL_COL(C, A, 1, x, y, z);
+    SKEW_MUL_COL(C, A, 2, x, y, z);
+}
+
+/* Row i of A v^ is A_i x v. */
+#define MUL_SKEW_ROW(C, A, i, x, y, z)                                         \
+    do {                                                                       \
+        const se23_real_t a0_ = (A)->m[i][0], a1_ = (A)->m[i][1],             \
+                          a2_ = (A)->m[i][2];                                  \
+        (C)->m[i][0] = (C)->m[i][0] + a1_ * (z) - a2_ * (y);                   \
+        (C)->m[i][1] = (C)->m[i][1] + a2_ * (x) - a0_ * (z);                   \
+        (C)->m[i][2] = (C)->m[i][2] + a0_ * (y) - a1_ * (x);                   \
+    } while (0)
+
+void se23_m3_acc_mul_skew(se23_mat3_t *restrict C, const se23_mat3_t *restrict A,
+                          const se23_vec3_t *restrict v)
+{
+    const se23_real_t x = v->v[0], y = v->v[1], z = v->v[2];
+    MUL_SKEW_ROW(C, A, 0, x, y, z);
+    MUL_SKEW_ROW(C, A, 1, x, y, z);
+    MUL_SKEW_ROW(C, A, 2, x, y, z);
+}
+
+void se23_m3_congruence_tn(const se23_mat3_t *R, const se23_mat3_t *A, int sym,
+                           se23_mat3_t *out)
+{
+    se23_mat3_t T;
+    se23_m3_mul_tn(R, A, &T);
+    const se23_real_t r00 = R->m[0][0], r01 = R->m[0][1], r02 = R->m[0][2];
+    const se23_real_t r10 = R->m[1][0], r11 = R->m[1][1], r12 = R->m[1][2];
+    const se23_real_t r20 = R->m[2][0], r21 = R->m[2][1], r22 = R->m[2][2];
+    out->m[0][0] = T.m[0][0] * r00 + T.m[0][1] * r10 + T.m[0][2] * r20;
+    out->m[0][1] = T.m[0][0] * r01 + T.m[0][1] * r11 + T.m[0][2] * r21;
+    out->m[0][2] = T.m[0][0] * r02 + T.m[0][1] * r12 + T.m[0][2] * r22;
+    out->m[1][1] = T.m[1][0] * r01 + T.m[1][1] * r11 + T.m[1][2] * r21;
+    out->m[1][2] = T.m[1][0] * r02 + T.m[1][1] * r12 + T.m[1][2] * r22;
+    out->m[2][2] = T.m[2][0] * r02 + T.m[2][1] * r12 + T.m[2][2] * r22;
+    if (!sym) {
+        out->m[1][0] = T.m[1][0] * r00 + T.m[1][1] * r10 + T.m[1][2] * r20;
+        out->m[2][0] = T.m[2][0] * r00 + T.m[2][1] * r10 + T.m[2][2] * r20;
+        out->m[2][1] = T.m[2][0] * r01 + T.m[2][1] * r11 + T.m[2][2] * r21;
+    }
+}
+
+se23_real_t se23_m3_orthonormalize_step(se23_mat3_t *X, se23_real_t done,
+                                        se23_real_t max_drift)
+{
+    se23_mat3_t XtX;
+    se23_m3_mul_tn(X, X, &XtX);
+    se23_real_t drift = SE23_R(0);
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            const se23_real_t e = se23_fabs(XtX.m[i][j] - ((i == j) ? SE23_R(1) : SE23_R(0)));
+            drift = (e > drift) ? e : drift;
+        }
+    }
+    if (drift > done && drift <= max_drift) {
+        /* (3I - X^T X)/2, then X times it. */
+        se23_mat3_t M;
+        se23_m3_scale(&XtX, SE23_R(-0.5), &M);
+        M.m[0][0] += SE23_R(1.5);
+        M.m[1][1] += SE23_R(1.5);
+        M.m[2][2] += SE23_R(1.5);
+        se23_m3_mul(X, &M, X);
+    }
+    return drift;
 }

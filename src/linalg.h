@@ -41,47 +41,53 @@ void se23_v3_scale(const se23_vec3_t *a, se23_real_t s, se23_vec3_t *out);
 void se23_m3_identity(se23_mat3_t *out);
 /** out = A B */
 void se23_m3_mul(const se23_mat3_t *A, const se23_mat3_t *B, se23_mat3_t *out);
-/** out = A^T B (27 multiply-adds). Inline, written out: it is the rotation
- *  step of every covariance kernel. out may alias A or B. */
-static inline void se23_m3_mul_tn(const se23_mat3_t *A, const se23_mat3_t *B,
-                                  se23_mat3_t *out)
-{
-    se23_mat3_t C;
-    for (int i = 0; i < 3; ++i) {
-        const se23_real_t a0 = A->m[0][i], a1 = A->m[1][i], a2 = A->m[2][i];
-        C.m[i][0] = a0 * B->m[0][0] + a1 * B->m[1][0] + a2 * B->m[2][0];
-        C.m[i][1] = a0 * B->m[0][1] + a1 * B->m[1][1] + a2 * B->m[2][1];
-        C.m[i][2] = a0 * B->m[0][2] + a1 * B->m[1][2] + a2 * B->m[2][2];
-    }
-    *out = C;
-}
+/** out = A^T B */
+void se23_m3_mul_tn(const se23_mat3_t *A, const se23_mat3_t *B, se23_mat3_t *out);
 /** out = A B^T */
 void se23_m3_mul_nt(const se23_mat3_t *A, const se23_mat3_t *B, se23_mat3_t *out);
-/** out = A^T; out may alias A. */
-static inline void se23_m3_transpose(const se23_mat3_t *A, se23_mat3_t *out)
-{
-    se23_mat3_t C;
-    C.m[0][0] = A->m[0][0];
-    C.m[0][1] = A->m[1][0];
-    C.m[0][2] = A->m[2][0];
-    C.m[1][0] = A->m[0][1];
-    C.m[1][1] = A->m[1][1];
-    C.m[1][2] = A->m[2][1];
-    C.m[2][0] = A->m[0][2];
-    C.m[2][1] = A->m[1][2];
-    C.m[2][2] = A->m[2][2];
-    *out = C;
-}
-/** out = A x */
+void se23_m3_transpose(const se23_mat3_t *A, se23_mat3_t *out);/** out = A x */
 void se23_m3_mul_v3(const se23_mat3_t *A, const se23_vec3_t *x, se23_vec3_t *out);
 /** out = A^T x */
 void se23_m3_tmul_v3(const se23_mat3_t *A, const se23_vec3_t *x, se23_vec3_t *out);
+/** out = s A */
+void se23_m3_scale(const se23_mat3_t *A, se23_real_t s, se23_mat3_t *out);
 /** out = A + s B */
 void se23_m3_axpy(const se23_mat3_t *A, se23_real_t s, const se23_mat3_t *B,
                   se23_mat3_t *out);
 /** out = v^ (skew matrix, v^ x = v cross x) */
 void se23_m3_skew(const se23_vec3_t *v, se23_mat3_t *out);
 se23_real_t se23_m3_det(const se23_mat3_t *A);
+
+/*
+ * Accumulating 3x3 kernels of the covariance steps (cov_step.c, kalman.c):
+ * written out, no loops; C is updated in place and must not alias the
+ * other operands. Multiply-add counts in brackets.
+ */
+/** C += A B [27] */
+void se23_m3_acc_mul(se23_mat3_t *restrict C, const se23_mat3_t *restrict A,
+                     const se23_mat3_t *restrict B);
+/** C += A B^T [27] */
+void se23_m3_acc_mul_nt(se23_mat3_t *restrict C, const se23_mat3_t *restrict A,
+                        const se23_mat3_t *restrict B);
+/** C += s v^ A [18 + 3] */
+void se23_m3_acc_skew_mul(se23_mat3_t *restrict C, se23_real_t s,
+                          const se23_vec3_t *restrict v, const se23_mat3_t *restrict A);
+/** C += A v^ [18] */
+void se23_m3_acc_mul_skew(se23_mat3_t *restrict C, const se23_mat3_t *restrict A,
+                          const se23_vec3_t *restrict v);
+/** out = R^T A R; with sym != 0 only the upper triangle of out is written
+ *  (A symmetric) [54 / 45]. out may alias A. */
+void se23_m3_congruence_tn(const se23_mat3_t *R, const se23_mat3_t *A, int sym,
+                           se23_mat3_t *out);
+
+/**
+ * Measures the drift d = max |(X^T X - I)_ij| and, if done < d <= max_drift,
+ * takes one Newton-Schulz step X <- X (3I - X^T X)/2 toward the orthogonal
+ * polar factor (quadratic: a drift of k eps becomes ~k^2 eps^2). Returns d
+ * (before the step). [27 + 36 when it steps]
+ */
+se23_real_t se23_m3_orthonormalize_step(se23_mat3_t *X, se23_real_t done,
+                                        se23_real_t max_drift);
 
 /**
  * out = a0 I + a1 W + a2 W^2 with W = phi^, using W^2 = phi phi^T - |phi|^2 I.

@@ -51,6 +51,10 @@ static inline int se23_is_finite(se23_real_t x) { return isfinite(x) != 0; }
 #define SE23_EPSILON FLT_EPSILON
 #endif
 
+/** A rotation whose |R^T R - I| is at most this counts as orthonormal: the
+ *  re-orthonormalisation is a no-op below it. */
+#define SE23_NORMALIZE_DONE (SE23_R(4) * SE23_EPSILON)
+
 /** pi in the build's precision. */
 #define SE23_PI SE23_R(3.14159265358979323846)
 

@@ -115,19 +115,11 @@ se23_status_t se23_so3_k(const se23_vec3_t *phi, se23_mat3_t *K)
     return eval_series(SERIES_K, phi, K);
 }
 
-/* Largest |(R^T R - I)_ij|. */
+/* Largest |(R^T R - I)_ij| (the step itself is disabled). */
 static se23_real_t orthogonality_error(const se23_mat3_t *R)
 {
-    se23_mat3_t RtR;
-    se23_m3_mul_tn(R, R, &RtR);
-    se23_real_t worst = SE23_R(0);
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-            se23_real_t e = se23_fabs(RtR.m[i][j] - ((i == j) ? SE23_R(1) : SE23_R(0)));
-            worst = (e > worst) ? e : worst;
-        }
-    }
-    return worst;
+    se23_mat3_t X = *R;
+    return se23_m3_orthonormalize_step(&X, SE23_R(1), SE23_R(0));
 }
 
 /* Finite and |R^T R - I| within tol; then the determinant: within tol of 1
@@ -213,20 +205,12 @@ se23_status_t se23_so3_normalize(const se23_mat3_t *R, se23_mat3_t *Rn)
     /* Newton-Schulz: X <- X (3I - X^T X)/2 converges quadratically to the
      * orthogonal polar factor; from a drift of 0.1 five steps reach double
      * rounding. Stop as soon as the drift is at rounding level. */
-    const se23_real_t done = SE23_R(4) * SE23_EPSILON;
     se23_mat3_t X = *R;
     for (int it = 0; it < NORMALIZE_MAX_ITER; ++it) {
-        if (orthogonality_error(&X) <= done) {
+        if (se23_m3_orthonormalize_step(&X, SE23_NORMALIZE_DONE, NORMALIZE_MAX_DRIFT) <=
+            SE23_NORMALIZE_DONE) {
             break;
         }
-        se23_mat3_t XtX;
-        se23_m3_mul_tn(&X, &X, &XtX);
-        for (int i = 0; i < 3; ++i) {
-            for (int j = 0; j < 3; ++j) {
-                XtX.m[i][j] = ((i == j) ? SE23_R(1.5) : SE23_R(0)) - SE23_R(0.5) * XtX.m[i][j];
-            }
-        }
-        se23_m3_mul(&X, &XtX, &X);
     }
     *Rn = X;
     return SE23_OK;

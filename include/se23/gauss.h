@@ -213,9 +213,11 @@ se23_status_t se23_gauss_check(const se23_gauss_t *g);
  * @param B     input matrix B_k (se23_gauss_input_jac)
  * @param noise IMU noise model (walks used only for n = 15)
  * @param dt    sample interval [s]
- * @return the statuses of se23_gauss_check, SE23_ERR_NOT_ROTATION (U),
- *         SE23_ERR_NONFINITE (B, noise), SE23_ERR_DOMAIN (negative noise
- *         parameter), SE23_ERR_DT.
+ * @return SE23_ERR_DIM (n), SE23_ERR_NOT_ROTATION (U), SE23_ERR_NONFINITE
+ *         (B, noise), SE23_ERR_DOMAIN (negative noise parameter, or B's
+ *         rotation rows depend on the accelerometer, which no B_k does),
+ *         SE23_ERR_DT; with SE23_CFG_DEEP_CHECKS the statuses of
+ *         se23_gauss_check.
  */
 se23_status_t se23_gauss_propagate(const se23_gauss_t *g, const se23_pose_t *U,
                                    const se23_mat9x6_t *B,
