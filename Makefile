@@ -55,10 +55,10 @@ lib: $(BUILD)/lib-host-double/libse23.a $(BUILD)/lib-host-float/libse23.a
 cross: $(BUILD)/lib-m4f-float/libse23.a $(BUILD)/lib-m7-double/libse23.a
 
 # CMake builds the tests and the Eigen reference, one tree per precision.
-# $(call cmake_tree,precision,ON|OFF)
+# $(call cmake_tree,name,SE23_DOUBLE ON|OFF,extra cmake options)
 define cmake_tree
 $(BUILD)/cmake-$(1)/CMakeCache.txt: CMakeLists.txt
-	cmake -S . -B $(BUILD)/cmake-$(1) -DSE23_DOUBLE=$(2) -DSE23_BUILD_TESTS=ON \
+	cmake -S . -B $(BUILD)/cmake-$(1) -DSE23_DOUBLE=$(2) -DSE23_BUILD_TESTS=ON $(3) \
 	      -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 .PHONY: tests-$(1)
 tests-$(1): $(BUILD)/cmake-$(1)/CMakeCache.txt
@@ -66,6 +66,8 @@ tests-$(1): $(BUILD)/cmake-$(1)/CMakeCache.txt
 endef
 $(eval $(call cmake_tree,double,ON))
 $(eval $(call cmake_tree,float,OFF))
+# The unit tests once more with SE23_CFG_DEEP_CHECKS=1 (no Eigen reference).
+$(eval $(call cmake_tree,deep,ON,-DSE23_DEEP_CHECKS=ON -DSE23_BUILD_REFERENCE=OFF))
 
 check: deps
 	@BUILD=$(BUILD) JOBS=$(JOBS) sh tests/check.sh

@@ -243,6 +243,7 @@ void tv_store_se23_preint_predict_carried(se23_real_t *out) { give(&out, &p.out,
  * (f, b_g, b_a, kind, P, J, classical Jacobians) -------------------------- */
 
 #define KIND_SENTINEL ((se23_input_jac_kind_t)-7)
+#define CLASSIC_SENTINEL (-7)
 
 static struct {
     se23_preint_unc_t fu, before;
@@ -259,6 +260,7 @@ static void take_unc(const se23_real_t **in, se23_preint_unc_t *fu)
     take(in, &fu->b_g, sizeof fu->b_g);
     take(in, &fu->b_a, sizeof fu->b_a);
     fu->kind = (se23_input_jac_kind_t)(int)take1(in);
+    fu->classic = (int)take1(in);
     take(in, &fu->P, sizeof fu->P);
     take(in, &fu->J, sizeof fu->J);
     take(in, &fu->cl, sizeof fu->cl);
@@ -270,6 +272,7 @@ static void give_unc(se23_real_t *out, const se23_preint_unc_t *fu)
     give(&out, &fu->b_g, sizeof fu->b_g);
     give(&out, &fu->b_a, sizeof fu->b_a);
     *out++ = fu->kind == KIND_SENTINEL ? TV_SENTINEL : (se23_real_t)fu->kind;
+    *out++ = fu->classic == CLASSIC_SENTINEL ? TV_SENTINEL : (se23_real_t)fu->classic;
     give(&out, &fu->P, sizeof fu->P);
     give(&out, &fu->J, sizeof fu->J);
     give(&out, &fu->cl, sizeof fu->cl);
@@ -280,6 +283,7 @@ static void fill_unc(se23_preint_unc_t *fu)
     tv_fill_sentinel(&fu->b_g, sizeof fu->b_g);
     tv_fill_sentinel(&fu->b_a, sizeof fu->b_a);
     fu->kind = KIND_SENTINEL;
+    fu->classic = CLASSIC_SENTINEL;
     tv_fill_sentinel(&fu->P, sizeof fu->P);
     tv_fill_sentinel(&fu->J, sizeof fu->J);
     tv_fill_sentinel(&fu->cl, sizeof fu->cl);
@@ -297,6 +301,16 @@ int tv_call_se23_preint_unc_reset(void)
     return (int)se23_preint_unc_reset(&u.b_g, &u.b_a, u.kind, &u.fu);
 }
 void tv_store_se23_preint_unc_reset(se23_real_t *out) { give_unc(out, &u.fu); }
+
+void tv_load_se23_preint_unc_reset_classic(const se23_real_t *in)
+{
+    tv_load_se23_preint_unc_reset(in);
+}
+int tv_call_se23_preint_unc_reset_classic(void)
+{
+    return (int)se23_preint_unc_reset_classic(&u.b_g, &u.b_a, u.kind, &u.fu);
+}
+void tv_store_se23_preint_unc_reset_classic(se23_real_t *out) { give_unc(out, &u.fu); }
 
 /* In-place update: on error the factor must be unchanged; store reports the
  * sentinel unless it changed (as for se23_preint_add). */

@@ -119,6 +119,7 @@ TV_CUSTOM(se23_kalman_update, TV_GAUSS_REALS + TV_MEAS_REALS, TV_GAUSS_REALS + 1
 
 /* preint_unc.h (se23_preint_unc_t travels as TV_PREINT_UNC_REALS reals) */
 TV_CUSTOM(se23_preint_unc_reset, 7, TV_PREINT_UNC_REALS, 0)
+TV_CUSTOM(se23_preint_unc_reset_classic, 7, TV_PREINT_UNC_REALS, 0)
 TV_CUSTOM(se23_preint_unc_add,
           TV_PREINT_UNC_REALS + TV_REALS(se23_imu_sample_t) + TV_REALS(se23_imu_noise_t),
           TV_PREINT_UNC_REALS, 16)

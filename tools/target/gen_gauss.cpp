@@ -153,8 +153,15 @@ int gauss_status(const Gauss &g, const Ctx &c)
     if (!is_rotation(g.T.block<3, 3>(0, 0), c)) return SE23_ERR_NOT_ROTATION;
     return cov_status(g.P.block(0, 0, g.n, g.n), c);
 }
+// What a step checks of the state it is handed (types.h, "Validation
+// policy"): only n; the rest is trusted.
+const int kStateEdges = 1;
+int state_status(const Gauss &g)
+{
+    return (g.n != 9 && g.n != 15) ? int(SE23_ERR_DIM) : int(SE23_OK);
+}
 // Edge rows of a gauss input: n = 12, NaN in a bias, R not a rotation,
-// P not symmetric, P not PSD.
+// P not symmetric, P not PSD; of a state a step is handed: n = 12.
 const int kGaussEdges = 5;
 void break_gauss(Gauss &g, int k)
 {
@@ -163,6 +170,10 @@ void break_gauss(Gauss &g, int k)
     if (k == 2) g.T.block<3, 3>(0, 0) *= LD(1.01);
     if (k == 3) g.P(0, 1) += LD(0.1) * g.P(0, 0);
     if (k == 4) g.P(2, 2) = -g.P(2, 2);
+}
+void break_state(Gauss &g, int k)
+{
+    if (k == 0) g.n = 12;
 }
 // P+ of one sample: Phi P Phi^T + diag(B N B^T, walk), n = 9 or 15.
 Mat15L propagate_cov(const Gauss &g, const Mat5L &U, const Mat96L &B, const LD nz[4], LD dt)
@@ -369,25 +380,25 @@ void add_gauss(Gens &g)
                                  return gauss_status(read_gauss(rd), c);
                              }};
     g["se23_gauss_propagate"] = {
-        kGaussEdges + 2,
+        kStateEdges + 2,
         [u_any](Ctx &c, int k) {
-            // edges: the gauss edges, then dt = 0, a negative density
+            // edges: n = 12, then dt = 0, a negative density
             Gauss x = gauss_any(c, k);
-            break_gauss(x, k);
+            break_state(x, k);
             LD dt;
             const Mat5L U = u_any(c, dt);
             Row r;
             put_gauss(r, x);
             put_pose(r, U);
             put(r, input_jac_exact(vec3_any(c, 2), vec3_any(c, 20), dt));
-            put_noise(r, k == kGaussEdges + 1 ? LD(-1e-3) : LD(1e-3), 1e-2L, 1e-5L, 1e-4L);
-            put(r, k == kGaussEdges ? LD(0) : dt);
+            put_noise(r, k == kStateEdges + 1 ? LD(-1e-3) : LD(1e-3), 1e-2L, 1e-5L, 1e-4L);
+            put(r, k == kStateEdges ? LD(0) : dt);
             return r;
         },
-        [](const Ctx &c, const Row &in, Row &out) {
+        [](const Ctx &, const Row &in, Row &out) {
             Rd rd{in};
             Gauss x = read_gauss(rd);
-            int st = gauss_status(x, c);
+            int st = state_status(x);
             const Mat5L U = rd.pose();
             Mat96L B;
             for (int i = 0; i < 9; ++i)
@@ -402,24 +413,24 @@ void add_gauss(Gens &g)
             return int(SE23_OK);
         }};
     g["se23_gauss_predict"] = {
-        kGaussEdges + 1,
+        kStateEdges + 1,
         [](Ctx &c, int k) {
-            // edges: the gauss edges, then a sample with dt = 0; kinds alternate
+            // edges: n = 12, then a sample with dt = 0; kinds alternate
             Row r;
             Vec3L gv, Om;
             const LD dt = c.uniform(1e-3L, 0.02L);
             put_model(c, r, gv, Om, dt);
             Gauss x = gauss_any(c, k);
-            break_gauss(x, k);
+            break_state(x, k);
             put_gauss(r, x);
             put(r, vec3_any(c, 2));
             put(r, vec3_any(c, 20));
-            put(r, k == kGaussEdges ? LD(0) : dt);
+            put(r, k == kStateEdges ? LD(0) : dt);
             put_noise(r, 1e-3L, 1e-2L, 1e-5L, 1e-4L);
             put(r, LD(k % 3 == 2 ? 1 : 0));
             return r;
         },
-        [](const Ctx &c, const Row &in, Row &out) {
+        [](const Ctx &, const Row &in, Row &out) {
             Rd rd{in};
             const Vec3L gv = rd.v3(), Om = rd.v3();
             rd.s();
@@ -430,7 +441,7 @@ void add_gauss(Gens &g)
             const LD dt = rd.s();
             const LD nz[4] = {rd.s(), rd.s(), rd.s(), rd.s()};
             const LD kind = rd.s();
-            int st = gauss_status(x, c);
+            int st = state_status(x);
             if (st == SE23_OK && !(dt > 0 && dt <= dt_max)) st = SE23_ERR_DT;
             if (st != SE23_OK) return st;
             const Mat5L user = carried_pose(x.T, Om, -1);
@@ -442,17 +453,17 @@ void add_gauss(Gens &g)
             return int(SE23_OK);
         }};
     const auto conv = [](LD sign) {
-        return Gen{kGaussEdges,
+        return Gen{kStateEdges,
                    [](Ctx &c, int k) {
                        Row r;
                        Vec3L gv, Om;
                        put_model(c, r, gv, Om, 0.005L);
                        Gauss x = gauss_any(c, k);
-                       break_gauss(x, k);
+                       break_state(x, k);
                        put_gauss(r, x);
                        return r;
                    },
-                   [sign](const Ctx &c, const Row &in, Row &out) {
+                   [sign](const Ctx &, const Row &in, Row &out) {
                        Rd rd{in};
                        rd.v3();
                        const Vec3L Om = rd.v3();
@@ -460,7 +471,7 @@ void add_gauss(Gens &g)
                        rd.s();
                        rd.pose();
                        Gauss x = read_gauss(rd);
-                       const int st = gauss_status(x, c);
+                       const int st = state_status(x);
                        if (st != SE23_OK) return st;
                        const Mat15L M = carried_m(x.T, Om, sign);
                        Mat15L P = Mat15L::Zero();

@@ -25,7 +25,7 @@ struct Unc {
     Mat5L delta;
     LD dt, n;
     Vec3L bg, ba;
-    LD kind;
+    LD kind, classic;
     Mat9L P;
     Mat96L J;
     Mat3L cl[5]; // dR_dbg, dV_dbg, dV_dba, dX_dbg, dX_dba
@@ -38,6 +38,7 @@ void put_unc(Row &r, const Unc &u)
     put(r, u.bg);
     put(r, u.ba);
     put(r, u.kind);
+    put(r, u.classic);
     put(r, u.P);
     put(r, u.J);
     for (const Mat3L &m : u.cl) put(r, m);
@@ -51,6 +52,7 @@ Unc read_unc(Rd &rd)
     u.bg = rd.v3();
     u.ba = rd.v3();
     u.kind = rd.s();
+    u.classic = rd.s();
     for (int i = 0; i < 9; ++i)
         for (int j = 0; j < 9; ++j) u.P(i, j) = rd.s();
     for (int i = 0; i < 9; ++i)
@@ -67,6 +69,7 @@ Unc unc_any(Ctx &c, int k)
     u.bg = vec3_any(c, 1e-2L);
     u.ba = vec3_any(c, 0.1L);
     u.kind = (k % 3 == 2) ? 1 : 0;
+    u.classic = (k % 2) ? 1 : 0;
     MatXL A(9, 9);
     for (int i = 0; i < 9; ++i)
         for (int j = 0; j < 9; ++j) A(i, j) = c.uniform(-1, 1);
@@ -79,10 +82,11 @@ Unc unc_any(Ctx &c, int k)
     return u;
 }
 // Edge rows: unknown kind, NaN in J, Delta R not a rotation, dt < 0,
-// P not symmetric, P not PSD.
-const int kUncEdges = 6;
+// P not symmetric, P not PSD, classic flag not 0 or 1.
+const int kUncEdges = 7;
 void break_unc(Unc &u, int k)
 {
+    if (k == 6) u.classic = 2;
     if (k == 0) u.kind = 2;
     if (k == 1) u.J(4, 2) = kNaN;
     if (k == 2) u.delta.block<3, 3>(0, 0) *= LD(1.01);
@@ -94,6 +98,7 @@ void break_unc(Unc &u, int k)
 int unc_status(const Unc &u, const Ctx &c)
 {
     if (u.kind != 0 && u.kind != 1) return SE23_ERR_DOMAIN;
+    if (u.classic != 0 && u.classic != 1) return SE23_ERR_DOMAIN;
     Row all;
     put_unc(all, u);
     if (!all_finite(all)) return SE23_ERR_NONFINITE;
@@ -104,7 +109,7 @@ int unc_status(const Unc &u, const Ctx &c)
 Scale scale_unc()
 {
     return scale_concat({{17, scale_blocks({9, 3, 3, 1, 1})},
-                         {7, scale_blocks({3, 3, 1})},
+                         {8, scale_blocks({3, 3, 1, 1})},
                          {81, scale_cov(9)},
                          {54, scale_mat_blocks(9, 6, 3)},
                          {45, scale_blocks({9, 9, 9, 9, 9})}});
@@ -114,52 +119,57 @@ Scale scale_unc()
 
 void add_preint_unc(Gens &g)
 {
-    g["se23_preint_unc_reset"] = {2,
-                                  [](Ctx &c, int k) {
-                                      // edges: unknown kind, NaN bias
-                                      Row r;
-                                      Vec3L bg = vec3_any(c, 1e-2L);
-                                      if (k == 1) bg(0) = kNaN;
-                                      put(r, bg);
-                                      put(r, vec3_any(c, 0.1L));
-                                      put(r, LD(k == 0 ? 2 : k % 2));
-                                      return r;
-                                  },
-                                  [](const Ctx &, const Row &in, Row &out) {
-                                      if (!all_finite(in)) return int(SE23_ERR_NONFINITE);
-                                      if (in[6] != 0 && in[6] != 1) return int(SE23_ERR_DOMAIN);
-                                      Unc u;
-                                      u.delta = Mat5L::Identity();
-                                      u.dt = u.n = 0;
-                                      u.bg = Vec3L(in[0], in[1], in[2]);
-                                      u.ba = Vec3L(in[3], in[4], in[5]);
-                                      u.kind = in[6];
-                                      u.P = Mat9L::Zero();
-                                      u.J = Mat96L::Zero();
-                                      for (Mat3L &m : u.cl) m = Mat3L::Zero();
-                                      put_unc(out, u);
-                                      return int(SE23_OK);
-                                  }};
+    const auto reset = [](LD classic) {
+        return Gen{2,
+                   [](Ctx &c, int k) {
+                       // edges: unknown kind, NaN bias
+                       Row r;
+                       Vec3L bg = vec3_any(c, 1e-2L);
+                       if (k == 1) bg(0) = kNaN;
+                       put(r, bg);
+                       put(r, vec3_any(c, 0.1L));
+                       put(r, LD(k == 0 ? 2 : k % 2));
+                       return r;
+                   },
+                   [classic](const Ctx &, const Row &in, Row &out) {
+                       if (!all_finite(in)) return int(SE23_ERR_NONFINITE);
+                       if (in[6] != 0 && in[6] != 1) return int(SE23_ERR_DOMAIN);
+                       Unc u;
+                       u.delta = Mat5L::Identity();
+                       u.dt = u.n = 0;
+                       u.bg = Vec3L(in[0], in[1], in[2]);
+                       u.ba = Vec3L(in[3], in[4], in[5]);
+                       u.kind = in[6];
+                       u.classic = classic;
+                       u.P = Mat9L::Zero();
+                       u.J = Mat96L::Zero();
+                       for (Mat3L &m : u.cl) m = Mat3L::Zero();
+                       put_unc(out, u);
+                       return int(SE23_OK);
+                   }};
+    };
+    g["se23_preint_unc_reset"] = reset(0);
+    g["se23_preint_unc_reset_classic"] = reset(1);
     g["se23_preint_unc_add"] = {
-        kUncEdges + 3,
+        3,
         [](Ctx &c, int k) {
-            // edges: the factor edges, then s.dt = 0, a negative density, NaN in s
+            // edges: s.dt = 0, a negative density, NaN in s (the factor is
+            // trusted: preint_unc.h, "Validation policy" of types.h)
             Unc u = unc_any(c, k);
-            break_unc(u, k);
             Row r;
             put_unc(r, u);
             Vec3L w = vec3_any(c, 2);
-            if (k == kUncEdges + 2) w(1) = kNaN;
+            if (k == 2) w(1) = kNaN;
             put(r, w);
             put(r, vec3_any(c, 20));
-            put(r, k == kUncEdges ? LD(0) : c.uniform(1e-3L, 0.02L));
-            put(r, k == kUncEdges + 1 ? LD(-1e-3) : LD(1e-3));
+            put(r, k == 0 ? LD(0) : c.uniform(1e-3L, 0.02L));
+            put(r, k == 1 ? LD(-1e-3) : LD(1e-3));
             put(r, 1e-2L);
             put(r, 1e-5L);
             put(r, 1e-4L);
             return r;
         },
-        [](const Ctx &c, const Row &in, Row &out) {
+        [](const Ctx &, const Row &in, Row &out) {
             Rd rd{in};
             Unc u = read_unc(rd);
             const Vec3L wm = rd.v3(), fm = rd.v3();
@@ -167,8 +177,8 @@ void add_preint_unc(Gens &g)
             rd.s();
             rd.s();
             if (!all_finite(in)) return int(SE23_ERR_NONFINITE);
-            int st = unc_status(u, c);
-            if (st == SE23_OK && !(dt > 0 && dt <= LD(SE23_CFG_DT_MAX))) st = SE23_ERR_DT;
+            int st = SE23_OK;
+            if (!(dt > 0 && dt <= LD(SE23_CFG_DT_MAX))) st = SE23_ERR_DT;
             if (st == SE23_OK && (sg < 0 || sa < 0)) st = SE23_ERR_DOMAIN;
             if (st != SE23_OK) return st;
             const Vec3L w = wm + u.bg, f = fm + u.ba;
@@ -191,7 +201,8 @@ void add_preint_unc(Gens &g)
             u.n += 1;
             u.P = F * u.P * F.transpose() + B * N * B.transpose();
             u.J = F * u.J + B;
-            for (int i = 0; i < 5; ++i) u.cl[i] = cl[i];
+            if (u.classic != 0)
+                for (int i = 0; i < 5; ++i) u.cl[i] = cl[i];
             put_unc(out, u);
             return int(SE23_OK);
         }};
@@ -227,6 +238,7 @@ void add_preint_unc(Gens &g)
             const Vec3L bg = rd.v3(), ba = rd.v3();
             int st = unc_status(u, c);
             if (st == SE23_OK && !all_finite(in)) st = SE23_ERR_NONFINITE;
+            if (st == SE23_OK && classic && u.classic == 0) st = SE23_ERR_DOMAIN;
             if (st != SE23_OK) return st;
             const Vec3L dg = bg - u.bg, da = ba - u.ba;
             if (!classic) {
@@ -245,6 +257,7 @@ void add_preint_unc(Gens &g)
     g["se23_preint_unc_correct"] = {kUncEdges + 1, correct_in, correct(false)};
     g["se23_preint_unc_correct_classic"] = {kUncEdges + 1, correct_in, correct(true)};
     g["se23_preint_unc_reset"].scale = scale_unc();
+    g["se23_preint_unc_reset_classic"].scale = scale_unc();
     g["se23_preint_unc_add"].scale = scale_unc();
     g["se23_preint_unc_correct"].scale = scale_blocks({9, 3, 3, 1, 1});
     g["se23_preint_unc_correct_classic"].scale = scale_blocks({9, 3, 3, 1, 1});
