@@ -15,7 +15,8 @@
  *                              tab-separated line per step: name, label,
  *                              max relative difference, then min, p10,
  *                              median, p90 in ns per call for se23 and for
- *                              the reference
+ *                              the reference, and p10, median, p90 of the
+ *                              ratio se23/reference within a round
  *
  * Exit status 1 if a call fails or the outputs differ by more than
  * rounding (BOUND, relative), 2 on a usage error.
@@ -101,13 +102,14 @@ static int time_steps(int rounds)
     }
     for (int k = 0; k < BENCH_N_STEPS; ++k) {
         const bench_step_t *s = &bench_steps[k];
-        bench_stats_t a, b;
-        if (bench_time_pair(s->se23, s->eigen, BENCH_RING, rounds, &a, &b) != 0) {
+        bench_stats_t a, b, r;
+        if (bench_time_pair(s->se23, s->eigen, BENCH_RING, rounds, &a, &b, &r) != 0) {
             fprintf(stderr, "se23-bench: %s: a call failed\n", s->name);
             return 1;
         }
-        printf("%s\t%s\t%.2g\t%.0f\t%.0f\t%.0f\t%.0f\t%.0f\t%.0f\t%.0f\t%.0f\n", s->name,
-               s->label, diff[k], a.min, a.p10, a.median, a.p90, b.min, b.p10, b.median, b.p90);
+        printf("%s\t%s\t%.2g\t%.0f\t%.0f\t%.0f\t%.0f\t%.0f\t%.0f\t%.0f\t%.0f\t%.2f\t%.2f\t%.2f\n",
+               s->name, s->label, diff[k], a.min, a.p10, a.median, a.p90, b.min, b.p10,
+               b.median, b.p90, r.p10, r.median, r.p90);
     }
     return 0;
 }

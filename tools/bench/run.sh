@@ -46,14 +46,15 @@ for prec in double float; do
     echo
     echo "### $prec"
     echo
-    echo "ns per call: median (p10-p90) over $rounds rounds; instructions per call: callgrind."
+    echo "ns per call and time ratio (within each round): median (p10-p90) over $rounds"
+    echo "rounds; instructions per call: callgrind."
     echo
     echo "| step | se23 ns | Eigen ns | time se23/Eigen | se23 instr | Eigen instr | instr se23/Eigen | max rel. diff |"
     echo "|---|---:|---:|---:|---:|---:|---:|---:|"
-    while IFS='	' read -r name label diff _ s10 smed s90 _ e10 emed e90; do
+    while IFS='	' read -r name label diff _ s10 smed s90 _ e10 emed e90 r10 rmed r90; do
         si=$(count "$bin" "$name/se23")
         ei=$(count "$bin" "$name/eigen")
-        echo "| $label | $smed ($s10-$s90) | $emed ($e10-$e90) | $(ratio "$smed" "$emed")" \
+        echo "| $label | $smed ($s10-$s90) | $emed ($e10-$e90) | $rmed ($r10-$r90)" \
             "| $si | $ei | $(ratio "$si" "$ei") | $diff |"
     done <"$tsv"
 done

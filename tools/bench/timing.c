@@ -39,9 +39,9 @@ static void stats(double *t, int rounds, bench_stats_t *s)
 }
 
 int bench_time_pair(bench_fn_t a, bench_fn_t b, int n, int rounds, bench_stats_t *sa,
-                    bench_stats_t *sb)
+                    bench_stats_t *sb, bench_stats_t *ratio)
 {
-    static double ta[BENCH_MAX_ROUNDS], tb[BENCH_MAX_ROUNDS];
+    static double ta[BENCH_MAX_ROUNDS], tb[BENCH_MAX_ROUNDS], tr[BENCH_MAX_ROUNDS];
     int bad = 0;
     if (rounds < 1 || rounds > BENCH_MAX_ROUNDS) {
         return 1;
@@ -58,9 +58,11 @@ int bench_time_pair(bench_fn_t a, bench_fn_t b, int n, int rounds, bench_stats_t
         if (r >= 0) {
             ta[r] = x;
             tb[r] = y;
+            tr[r] = x / y;
         }
     }
     stats(ta, rounds, sa);
     stats(tb, rounds, sb);
+    stats(tr, rounds, ratio);
     return bad;
 }
