@@ -68,7 +68,7 @@ static int cross_check(double *diff)
         diff[k] = 0;
         for (int i = 0; i < BENCH_RING; ++i) {
             const int st = s->se23(i) | s->eigen(i);
-            const double d = st != 0 ? INFINITY : s->diff(i);
+            const double d = st != 0 ? (double)INFINITY : s->diff(i);
             diff[k] = d > diff[k] ? d : diff[k];
         }
         if (!(diff[k] <= BOUND)) {
