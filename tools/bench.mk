@@ -3,19 +3,22 @@
 # time and callgrind instructions, then instructions per routine; float and
 # double builds. Included by the top-level Makefile.
 .PHONY: bench bench-bins
-BENCH_CFLAGS := $(WARN) -O2 -Iinclude
+BENCH_CFLAGS := $(WARN) -O2 -Iinclude -Itests/support
 BENCH_CXXFLAGS := -std=c++17 -Wall -Wextra -Wpedantic -Werror -O2 -Iinclude \
                   -isystem /usr/include/eigen3
-BENCH_SRCS := $(wildcard tools/bench/*.c tools/bench/*.cpp)
-BENCH_HDRS := $(wildcard tools/bench/*.h tools/bench/*.hpp) $(LIB_HDRS)
+# The inputs come from the tests' seeded generator (as the paper tools do).
+BENCH_SRCS := $(wildcard tools/bench/*.c tools/bench/*.cpp) tests/support/se23_rng.c
+BENCH_HDRS := $(wildcard tools/bench/*.h tools/bench/*.hpp) tests/support/se23_rng.h $(LIB_HDRS)
 
 # $(call bench_rules,precision,SE23_CFG_DOUBLE)
 define bench_rules
 $(BUILD)/bench-$(1)/%.o: tools/bench/%.c $(BENCH_HDRS) | $(BUILD)/bench-$(1)
 	$(CC) $(BENCH_CFLAGS) -DSE23_CFG_DOUBLE=$(2) -c $$< -o $$@
+$(BUILD)/bench-$(1)/%.o: tests/support/%.c $(BENCH_HDRS) | $(BUILD)/bench-$(1)
+	$(CC) $(BENCH_CFLAGS) -DSE23_CFG_DOUBLE=$(2) -c $$< -o $$@
 $(BUILD)/bench-$(1)/%.o: tools/bench/%.cpp $(BENCH_HDRS) | $(BUILD)/bench-$(1)
 	$(CXX) $(BENCH_CXXFLAGS) -DSE23_CFG_DOUBLE=$(2) -c $$< -o $$@
-$(BUILD)/bench-$(1)/se23-bench: $(patsubst tools/bench/%,$(BUILD)/bench-$(1)/%.o,$(basename $(BENCH_SRCS))) \
+$(BUILD)/bench-$(1)/se23-bench: $(patsubst %,$(BUILD)/bench-$(1)/%.o,$(notdir $(basename $(BENCH_SRCS)))) \
                                 $(BUILD)/lib-host-$(1)/libse23.a
 	$(CXX) $$^ -lm -o $$@
 $(BUILD)/bench-$(1):

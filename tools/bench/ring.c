@@ -8,26 +8,21 @@
 
 #include "se23/kalman.h"
 #include "se23/so3.h"
+#include "se23_rng.h"
 
 #define RATE_HZ 200
 #define WARMUP (RATE_HZ * 1) /* samples before the ring starts */
 #define GNSS_EVERY 40        /* 5 Hz */
 
-/* Deterministic pseudo-noise in [-0.5, 0.5]. */
-static double lcg(unsigned *state)
-{
-    *state = *state * 1103515245u + 12345u;
-    return (double)((*state >> 8) & 0xFFFF) / 65535.0 - 0.5;
-}
-
-/* A manoeuvring UAV: raw gyro and accelerometer readings at time t [s]. */
-static void sample_at(double t, unsigned *st, se23_imu_sample_t *s)
+/* A manoeuvring UAV: raw gyro and accelerometer readings at time t [s],
+ * with the white noise of the MEMS densities of models() at 200 Hz. */
+static void sample_at(double t, se23t_rng_t *rng, se23_imu_sample_t *s)
 {
     const double w[3] = {0.3 * sin(1.1 * t), 0.2 * cos(0.7 * t), 0.25 + 0.1 * sin(0.3 * t)};
     const double f[3] = {0.8 * sin(0.9 * t), 0.4 * cos(1.3 * t), -9.81 + 0.5 * sin(2.0 * t)};
     for (int k = 0; k < 3; ++k) {
-        s->w_ib_b.v[k] = (se23_real_t)(w[k] + 2e-3 * lcg(st));
-        s->f_b.v[k] = (se23_real_t)(f[k] + 4e-2 * lcg(st));
+        s->w_ib_b.v[k] = (se23_real_t)(w[k] + 7e-3 * se23t_normal(rng));
+        s->f_b.v[k] = (se23_real_t)(f[k] + 3e-2 * se23t_normal(rng));
     }
     s->dt = SE23_R(1.0 / RATE_HZ);
 }
@@ -58,8 +53,8 @@ static se23_status_t initial_state(const se23_earth_model_t *m, se23_gauss_t *g)
     return st;
 }
 
-/* A GNSS fix near the antenna of state g: h(T) plus pseudo-noise (~1 m). */
-static void gnss_fix(const bench_ring_t *r, const se23_gauss_t *g, unsigned *st,
+/* A GNSS fix near the antenna of state g: h(T) plus noise of 1 m. */
+static void gnss_fix(const bench_ring_t *r, const se23_gauss_t *g, se23t_rng_t *rng,
                      se23_vec3_t *p_n)
 {
     for (int k = 0; k < 3; ++k) {
@@ -67,7 +62,7 @@ static void gnss_fix(const bench_ring_t *r, const se23_gauss_t *g, unsigned *st,
         for (int j = 0; j < 3; ++j) {
             rl += g->T.R.m[k][j] * r->lever_b.v[j];
         }
-        p_n->v[k] = g->T.p.v[k] + rl + (se23_real_t)(2.0 * lcg(st));
+        p_n->v[k] = g->T.p.v[k] + rl + (se23_real_t)se23t_normal(rng);
     }
 }
 
@@ -85,10 +80,11 @@ static void models(bench_ring_t *r)
 
 int bench_ring_fill(bench_ring_t *r)
 {
-    unsigned rng = 7;
+    se23t_rng_t rng;
     se23_gauss_t g;
     se23_preint_unc_t fu;
     memset(r, 0, sizeof *r);
+    se23t_rng_seed(&rng, 7);
     models(r);
     se23_status_t st = se23_earth_model_init_wgs84(SE23_FRAME_NED, SE23_R(0.785), SE23_R(120),
                                                    SE23_R(1.0 / RATE_HZ), SE23_R(0.02), &r->model);

@@ -6,6 +6,7 @@
 #include "se23/imu.h"
 #include "se23/se23.h"
 #include "se23/so3.h"
+#include "se23_rng.h"
 
 static se23_vec3_t phis[BENCH_RING];
 static se23_mat3_t rots[BENCH_RING];
@@ -17,29 +18,18 @@ static se23_earth_model_t model;
 /* Results are written here so the compiler cannot drop the calls. */
 static volatile se23_real_t sink;
 
-static double lcg(unsigned *state)
-{
-    *state = *state * 1103515245u + 12345u;
-    return (double)((*state >> 8) & 0xFFFF) / 65535.0 - 0.5;
-}
-
 int bench_routines_prepare(void)
 {
-    unsigned st = 1;
+    se23t_rng_t rng;
     int bad = 0;
+    se23t_rng_seed(&rng, 1);
     for (int i = 0; i < BENCH_RING; ++i) {
-        for (int k = 0; k < 3; ++k) {
-            phis[i].v[k] = (se23_real_t)(4.0 * lcg(&st));
-        }
-        for (int k = 0; k < 9; ++k) {
-            xis[i].v[k] = (se23_real_t)(4.0 * lcg(&st));
-        }
+        se23t_random_vec3(&rng, 2.0, &phis[i]);
+        se23t_random_tangent(&rng, 3.0, 2.0, &xis[i]);
         bad |= (int)se23_so3_exp(&phis[i], &rots[i]);
         bad |= (int)se23_exp(&xis[i], &poses[i]);
-        for (int k = 0; k < 3; ++k) {
-            samples[i].w_ib_b.v[k] = (se23_real_t)lcg(&st);
-            samples[i].f_b.v[k] = (se23_real_t)(20.0 * lcg(&st));
-        }
+        se23t_random_vec3(&rng, 0.5, &samples[i].w_ib_b);
+        se23t_random_vec3(&rng, 10.0, &samples[i].f_b);
         samples[i].dt = SE23_R(0.005);
     }
     const se23_vec3_t g = {{0, 0, SE23_R(9.81)}};

@@ -1,8 +1,8 @@
 /*
  * The library's routines one by one, for the per-routine instruction
  * counts (callgrind): each kernel calls one routine on input i of a ring of
- * BENCH_RING varied inputs (angles up to 2 rad, poses, 200 Hz samples) and
- * returns its status.
+ * BENCH_RING seeded random inputs (rotation vectors with entries up to
+ * 2 rad, poses, 200 Hz samples) and returns its status.
  */
 #ifndef SE23_BENCH_ROUTINES_H
 #define SE23_BENCH_ROUTINES_H
