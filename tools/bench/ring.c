@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "se23/kalman.h"
+#include "se23/se23.h"
 #include "se23/so3.h"
 #include "se23_rng.h"
 
@@ -53,16 +54,13 @@ static se23_status_t initial_state(const se23_earth_model_t *m, se23_gauss_t *g)
     return st;
 }
 
-/* A GNSS fix near the antenna of state g: h(T) plus noise of 1 m. */
+/* A GNSS fix near the antenna of state g: h(T) = p + R l plus noise of 1 m. */
 static void gnss_fix(const bench_ring_t *r, const se23_gauss_t *g, se23t_rng_t *rng,
                      se23_vec3_t *p_n)
 {
+    se23_act(&g->T, &r->lever_b, p_n);
     for (int k = 0; k < 3; ++k) {
-        se23_real_t rl = SE23_R(0);
-        for (int j = 0; j < 3; ++j) {
-            rl += g->T.R.m[k][j] * r->lever_b.v[j];
-        }
-        p_n->v[k] = g->T.p.v[k] + rl + (se23_real_t)se23t_normal(rng);
+        p_n->v[k] += (se23_real_t)se23t_normal(rng);
     }
 }
 
