@@ -4,7 +4,8 @@
 #   make check   every test (installs Debian packages it needs first)
 #   make lib     the library alone, host, both precisions (no CMake needed)
 #   make cross   the library for Cortex-M4F (float) and Cortex-M7 (double)
-#   make bench   instruction counts on the host (valgrind --tool=callgrind)
+#   make bench   host benchmark: filter steps vs a dense Eigen reference
+#                (ns and callgrind instructions per call), routines
 #
 # Firmware builds can instead compile src/*.c with include/ on their include
 # path and -DSE23_CFG_DOUBLE=0 or 1; nothing else is needed.
