@@ -81,10 +81,10 @@ static const se23_real_t d4_taylor[DERIV_TERMS] = {
     SE23_R(1.0 / 31022420086661971968000.0),
 };
 
-static se23_real_t horner(const se23_real_t *c, se23_real_t t2)
+static se23_real_t horner(const se23_real_t *c, int terms, se23_real_t t2)
 {
-    se23_real_t s = c[DERIV_TERMS - 1];
-    for (int k = DERIV_TERMS - 2; k >= 0; --k) {
+    se23_real_t s = c[terms - 1];
+    for (int k = terms - 2; k >= 0; --k) {
         s = s * t2 + c[k];
     }
     return s;
@@ -98,9 +98,12 @@ static void deriv_coeffs(se23_real_t t, deriv_coeffs_t *d)
 {
     const se23_real_t t2 = t * t;
     if (t < DERIV_TAYLOR_MAX) {
-        d->d2 = horner(d2_taylor, t2);
-        d->d3 = horner(d3_taylor, t2);
-        d->d4 = horner(d4_taylor, t2);
+        /* Small angles: the first omitted term is below 3e-17 (double) or
+         * 3e-9 (float) relative, as for the series of so3_series.h. */
+        const int n = (t < SE23_SERIES_SMALL_THETA) ? SE23_SERIES_SMALL_TERMS : DERIV_TERMS;
+        d->d2 = horner(d2_taylor, n, t2);
+        d->d3 = horner(d3_taylor, n, t2);
+        d->d4 = horner(d4_taylor, n, t2);
         return;
     }
     const se23_real_t s = se23_sin(t), c = se23_cos(t);

@@ -31,16 +31,16 @@ void se23_v3_cross(const se23_vec3_t *a, const se23_vec3_t *b, se23_vec3_t *out)
 void se23_v3_axpy(const se23_vec3_t *a, se23_real_t s, const se23_vec3_t *b,
                   se23_vec3_t *out)
 {
-    for (int i = 0; i < 3; ++i) {
-        out->v[i] = a->v[i] + s * b->v[i];
-    }
+    out->v[0] = a->v[0] + s * b->v[0];
+    out->v[1] = a->v[1] + s * b->v[1];
+    out->v[2] = a->v[2] + s * b->v[2];
 }
 
 void se23_v3_scale(const se23_vec3_t *a, se23_real_t s, se23_vec3_t *out)
 {
-    for (int i = 0; i < 3; ++i) {
-        out->v[i] = s * a->v[i];
-    }
+    out->v[0] = s * a->v[0];
+    out->v[1] = s * a->v[1];
+    out->v[2] = s * a->v[2];
 }
 
 void se23_m3_identity(se23_mat3_t *out)
@@ -54,14 +54,21 @@ void se23_m3_identity(se23_mat3_t *out)
 
 void se23_m3_mul(const se23_mat3_t *A, const se23_mat3_t *B, se23_mat3_t *out)
 {
-    se23_mat3_t C;
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-            C.m[i][j] = A->m[i][0] * B->m[0][j] + A->m[i][1] * B->m[1][j] +
-                        A->m[i][2] * B->m[2][j];
-        }
-    }
-    *out = C;
+    const se23_real_t a00 = A->m[0][0], a01 = A->m[0][1], a02 = A->m[0][2];
+    const se23_real_t a10 = A->m[1][0], a11 = A->m[1][1], a12 = A->m[1][2];
+    const se23_real_t a20 = A->m[2][0], a21 = A->m[2][1], a22 = A->m[2][2];
+    const se23_real_t b00 = B->m[0][0], b01 = B->m[0][1], b02 = B->m[0][2];
+    const se23_real_t b10 = B->m[1][0], b11 = B->m[1][1], b12 = B->m[1][2];
+    const se23_real_t b20 = B->m[2][0], b21 = B->m[2][1], b22 = B->m[2][2];
+    out->m[0][0] = a00 * b00 + a01 * b10 + a02 * b20;
+    out->m[0][1] = a00 * b01 + a01 * b11 + a02 * b21;
+    out->m[0][2] = a00 * b02 + a01 * b12 + a02 * b22;
+    out->m[1][0] = a10 * b00 + a11 * b10 + a12 * b20;
+    out->m[1][1] = a10 * b01 + a11 * b11 + a12 * b21;
+    out->m[1][2] = a10 * b02 + a11 * b12 + a12 * b22;
+    out->m[2][0] = a20 * b00 + a21 * b10 + a22 * b20;
+    out->m[2][1] = a20 * b01 + a21 * b11 + a22 * b21;
+    out->m[2][2] = a20 * b02 + a21 * b12 + a22 * b22;
 }
 
 void se23_m3_mul_tn(const se23_mat3_t *A, const se23_mat3_t *B, se23_mat3_t *out)
@@ -99,32 +106,37 @@ void se23_m3_transpose(const se23_mat3_t *A, se23_mat3_t *out)
 
 void se23_m3_mul_nt(const se23_mat3_t *A, const se23_mat3_t *B, se23_mat3_t *out)
 {
-    se23_mat3_t C;
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-            C.m[i][j] = A->m[i][0] * B->m[j][0] + A->m[i][1] * B->m[j][1] +
-                        A->m[i][2] * B->m[j][2];
-        }
-    }
-    *out = C;
+    const se23_real_t a00 = A->m[0][0], a01 = A->m[0][1], a02 = A->m[0][2];
+    const se23_real_t a10 = A->m[1][0], a11 = A->m[1][1], a12 = A->m[1][2];
+    const se23_real_t a20 = A->m[2][0], a21 = A->m[2][1], a22 = A->m[2][2];
+    const se23_real_t b00 = B->m[0][0], b01 = B->m[0][1], b02 = B->m[0][2];
+    const se23_real_t b10 = B->m[1][0], b11 = B->m[1][1], b12 = B->m[1][2];
+    const se23_real_t b20 = B->m[2][0], b21 = B->m[2][1], b22 = B->m[2][2];
+    out->m[0][0] = a00 * b00 + a01 * b01 + a02 * b02;
+    out->m[0][1] = a00 * b10 + a01 * b11 + a02 * b12;
+    out->m[0][2] = a00 * b20 + a01 * b21 + a02 * b22;
+    out->m[1][0] = a10 * b00 + a11 * b01 + a12 * b02;
+    out->m[1][1] = a10 * b10 + a11 * b11 + a12 * b12;
+    out->m[1][2] = a10 * b20 + a11 * b21 + a12 * b22;
+    out->m[2][0] = a20 * b00 + a21 * b01 + a22 * b02;
+    out->m[2][1] = a20 * b10 + a21 * b11 + a22 * b12;
+    out->m[2][2] = a20 * b20 + a21 * b21 + a22 * b22;
 }
 
 void se23_m3_mul_v3(const se23_mat3_t *A, const se23_vec3_t *x, se23_vec3_t *out)
 {
-    se23_vec3_t y;
-    for (int i = 0; i < 3; ++i) {
-        y.v[i] = A->m[i][0] * x->v[0] + A->m[i][1] * x->v[1] + A->m[i][2] * x->v[2];
-    }
-    *out = y;
+    const se23_real_t x0 = x->v[0], x1 = x->v[1], x2 = x->v[2];
+    out->v[0] = A->m[0][0] * x0 + A->m[0][1] * x1 + A->m[0][2] * x2;
+    out->v[1] = A->m[1][0] * x0 + A->m[1][1] * x1 + A->m[1][2] * x2;
+    out->v[2] = A->m[2][0] * x0 + A->m[2][1] * x1 + A->m[2][2] * x2;
 }
 
 void se23_m3_tmul_v3(const se23_mat3_t *A, const se23_vec3_t *x, se23_vec3_t *out)
 {
-    se23_vec3_t y;
-    for (int i = 0; i < 3; ++i) {
-        y.v[i] = A->m[0][i] * x->v[0] + A->m[1][i] * x->v[1] + A->m[2][i] * x->v[2];
-    }
-    *out = y;
+    const se23_real_t x0 = x->v[0], x1 = x->v[1], x2 = x->v[2];
+    out->v[0] = A->m[0][0] * x0 + A->m[1][0] * x1 + A->m[2][0] * x2;
+    out->v[1] = A->m[0][1] * x0 + A->m[1][1] * x1 + A->m[2][1] * x2;
+    out->v[2] = A->m[0][2] * x0 + A->m[1][2] * x1 + A->m[2][2] * x2;
 }
 
 void se23_m3_scale(const se23_mat3_t *A, se23_real_t s, se23_mat3_t *out)
@@ -293,12 +305,14 @@ se23_real_t se23_m3_orthonormalize_step(se23_mat3_t *X, se23_real_t done,
 {
     se23_mat3_t XtX;
     se23_m3_mul_tn(X, X, &XtX);
-    se23_real_t drift = SE23_R(0);
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-            const se23_real_t e = se23_fabs(XtX.m[i][j] - ((i == j) ? SE23_R(1) : SE23_R(0)));
-            drift = (e > drift) ? e : drift;
-        }
+    /* X^T X is symmetric: its upper triangle carries the drift. */
+    const se23_real_t e[6] = {
+        se23_fabs(XtX.m[0][0] - SE23_R(1)), se23_fabs(XtX.m[1][1] - SE23_R(1)),
+        se23_fabs(XtX.m[2][2] - SE23_R(1)), se23_fabs(XtX.m[0][1]),
+        se23_fabs(XtX.m[0][2]),             se23_fabs(XtX.m[1][2])};
+    se23_real_t drift = e[0];
+    for (int i = 1; i < 6; ++i) {
+        drift = (e[i] > drift) ? e[i] : drift;
     }
     if (drift > done && drift <= max_drift) {
         /* (3I - X^T X)/2, then X times it. */

@@ -67,14 +67,20 @@ static const se23_real_t k2_taylor[SERIES_TERMS] = {
     SE23_R(1.0 / 128047474114560000.0),
 };
 
-/* sum_{k < SERIES_TERMS} coef[k * stride] * x^k, by Horner. */
-static se23_real_t horner(const se23_real_t *coef, int stride, se23_real_t x)
+/* sum_{k < terms} coef[k * stride] * x^k, by Horner. */
+static se23_real_t horner_n(const se23_real_t *coef, int stride, int terms,
+                            se23_real_t x)
 {
-    se23_real_t acc = coef[(SERIES_TERMS - 1) * stride];
-    for (int k = SERIES_TERMS - 2; k >= 0; --k) {
+    se23_real_t acc = coef[(terms - 1) * stride];
+    for (int k = terms - 2; k >= 0; --k) {
         acc = coef[k * stride] + x * acc;
     }
     return acc;
+}
+
+static se23_real_t horner(const se23_real_t *coef, int stride, se23_real_t x)
+{
+    return horner_n(coef, stride, SERIES_TERMS, x);
 }
 
 void se23_so3_coeffs(se23_real_t theta, se23_so3_coeffs_t *c)
@@ -82,10 +88,12 @@ void se23_so3_coeffs(se23_real_t theta, se23_so3_coeffs_t *c)
     const se23_real_t t = theta * theta;
     if (theta < TAYLOR_MAX) {
         /* c_m = sum_k inv_fact[2k + m] (-t)^k */
-        c->c1 = horner(&inv_fact[1], 2, -t);
-        c->c2 = horner(&inv_fact[2], 2, -t);
-        c->c3 = horner(&inv_fact[3], 2, -t);
-        c->c4 = horner(&inv_fact[4], 2, -t);
+        const int n = (theta < SE23_SERIES_SMALL_THETA) ? SE23_SERIES_SMALL_TERMS
+                                                         : SERIES_TERMS;
+        c->c1 = horner_n(&inv_fact[1], 2, n, -t);
+        c->c2 = horner_n(&inv_fact[2], 2, n, -t);
+        c->c3 = horner_n(&inv_fact[3], 2, n, -t);
+        c->c4 = horner_n(&inv_fact[4], 2, n, -t);
         return;
     }
     const se23_real_t s = se23_sin(theta);

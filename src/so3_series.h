@@ -22,6 +22,17 @@
 
 #include "se23/types.h"
 
+/** Below this angle (IMU samples: |w| dt is rarely above 0.05 rad) every
+ *  series of the library is summed with SE23_SERIES_SMALL_TERMS terms: the
+ *  first omitted term is then below 3e-17 (double, 5 terms) or 3e-9 (float,
+ *  3 terms) relative, and the Horner sum costs about half. */
+#define SE23_SERIES_SMALL_THETA SE23_R(0.1)
+#if SE23_CFG_DOUBLE
+#define SE23_SERIES_SMALL_TERMS 5
+#else
+#define SE23_SERIES_SMALL_TERMS 3
+#endif
+
 /** The four sin/cos coefficients at one angle. */
 typedef struct {
     se23_real_t c1;
