@@ -85,8 +85,8 @@ cmocka_test() {
     SKIPPED=$((SKIPPED + s))
     # A skipped case shows as "[  SKIPPED ] name" when it runs and again in
     # the closing list.
-    for case in $(sed -n 's/^\[  SKIPPED \] \([A-Za-z_][A-Za-z0-9_]*\)$/\1/p' "$log" | sort -u); do
-        SKIPPED_NAMES="$SKIPPED_NAMES $name:$case"
+    for sk in $(sed -n 's/^\[  SKIPPED \] \([A-Za-z_][A-Za-z0-9_]*\)$/\1/p' "$log" | sort -u); do
+        SKIPPED_NAMES="$SKIPPED_NAMES $name:$sk"
     done
     if [ "$rc" -ne 0 ] && [ "$f" -eq 0 ]; then
         note_fail "$name(valgrind/crash rc=$rc)"
