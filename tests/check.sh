@@ -28,11 +28,12 @@ progress() {
 }
 
 # heartbeat NAME LOG PID START: every 20 s while PID runs, the time spent and
-# the last line of LOG (what the build is compiling), so that a long step
-# (a first build of the tests takes minutes) is never silent.
+# the last line of LOG (for a build, the file it compiles), so that a long
+# step (a first build of the tests takes minutes) is never silent.
 heartbeat() {
     while sleep 20 && kill -0 "$3" 2>/dev/null; do
-        progress "$1" "$(($(date +%s) - $4)) s: $(tail -n 1 "$2" | tr -d '\r')"
+        progress "$1" "$(($(date +%s) - $4)) s: $(tail -n 1 "$2" | tr -d '\r' |
+            sed 's|Building \([A-Z]*\) object .*/|compiling |; s|\.o$||')"
     done
 }
 
