@@ -6,6 +6,7 @@
 #   make cross   the library for Cortex-M4F (float) and Cortex-M7 (double)
 #   make bench   host benchmark: filter steps vs a dense Eigen reference
 #                (ns and callgrind instructions per call), routines
+#   make clean   removes $(BUILD): the tree is then as cloned
 #
 # Firmware builds can instead compile src/*.c with include/ on their include
 # path and -DSE23_CFG_DOUBLE=0 or 1; nothing else is needed.
@@ -14,7 +15,25 @@ BUILD ?= build
 CC ?= cc
 ARM_CC ?= arm-none-eabi-gcc
 ARM_AR ?= arm-none-eabi-ar
-JOBS ?= 2
+
+# Parallel jobs of the test builds: one per core, but no more than the
+# available memory (MemAvailable) allows at JOB_MEM_KB per job: the heaviest
+# compile, tests/reference/ref_matfun.cpp, peaks at 2.5 GB resident (README
+# "First run"). JOBS=N overrides.
+JOB_MEM_KB := 2600000
+ifeq ($(origin JOBS),undefined)
+JOBS := $(shell awk -v cores="$$(nproc 2>/dev/null || echo 1)" \
+          '/^MemAvailable:/ { j = int($$2 / $(JOB_MEM_KB)); \
+                              print (j < 1 ? 1 : (j > cores ? cores : j)) }' \
+          /proc/meminfo 2>/dev/null)
+JOBS := $(or $(JOBS),1)
+endif
+
+# Nothing is written outside $(BUILD): no Python byte code next to the
+# scripts (tools/target) or in cppcheck's system addon folder, and
+# matplotlib's cache and config under $(BUILD) instead of ~/.cache, ~/.config.
+export PYTHONDONTWRITEBYTECODE := 1
+export MPLCONFIGDIR := $(abspath $(BUILD))/matplotlib
 
 LIB_SRCS := $(sort $(wildcard src/*.c))
 LIB_HDRS := $(wildcard include/se23/*.h src/*.h)
@@ -35,7 +54,7 @@ ARM_CFLAGS := -ffunction-sections -fdata-sections -fcallgraph-info=su -ffp-contr
 all: lib
 
 deps:
-	@sh tools/install-deps.sh
+	@sh tools/install-deps.sh $(BUILD)
 
 # $(call lib_rules,variant,compiler,archiver,extra flags)
 define lib_rules

@@ -64,12 +64,12 @@ $(H_BIN)/se23-corrupt: $(call h_objs,$(H_CORRUPT_SRCS)) $(H)/libse23lcm.a
 	$(CC) -o $@ $^ $(LCM_LIBS) -lm
 
 demo:
-	@sh tools/install-deps.sh
+	@sh tools/install-deps.sh $(BUILD)
 	@$(MAKE) -s --no-print-directory harness BUILD=$(BUILD)
 	@sh tools/lcm/demo.sh $(H)
 
 demo-live:
-	@sh tools/install-deps.sh
+	@sh tools/install-deps.sh $(BUILD)
 	@$(MAKE) -s --no-print-directory harness BUILD=$(BUILD)
 	@sh tools/lcm/live.sh $(H)
 

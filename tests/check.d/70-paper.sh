@@ -1,8 +1,11 @@
 # Paper reproductions (tools/paper.mk), reduced size:
 #  - the Table "Higher-order errors for a low-cost IMU" on 120 s of the UAV
-#    trajectory with 32 bias draws: the exponential correction with the exact
-#    B_k must be no worse than the classical one in velocity RMS at T = 1 s,
-#    10 s and 60 s (the README has the full table);
+#    trajectory with 32 fresh bias draws per factor: in velocity RMS the
+#    paper's proposed correction (basic B_k) must be no worse than the
+#    classical pipeline of Forster et al. at T = 1 s, 10 s and 60 s, and the
+#    exact B_k no worse than the basic one at 1 s (the README has the full
+#    table). On the first 60 s alone the proposed correction loses at 60 s,
+#    and the same check must fail there (the check can fail);
 #  - the Monte Carlo of the paper's Figure at moderate noise: the mean NEES
 #    of the concentrated Gaussian inside the 95% interval of chi^2_9 for 2000
 #    runs, the standard EKF's above it (the check can fail);
@@ -10,6 +13,8 @@
 PAPER_DIR="$BUILD/paper"
 check paper-build make -s paper-bins BUILD="$BUILD"
 check paper-table-reduced "$PAPER_DIR/se23-paper-table" --duration 120 --draws 32 --check
+check paper-table-check-can-fail sh -c '! "$1" --duration 60 --draws 32 --check' sh \
+    "$PAPER_DIR/se23-paper-table"
 check paper-montecarlo-nees "$PAPER_DIR/se23-montecarlo" --gyro 0.05,0.05,0.05 --accel 0.5 \
     --runs 2000 --check
 paper_plot() {

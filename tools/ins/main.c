@@ -41,7 +41,7 @@ typedef struct {
     int64_t nav_every; /* publish when seq % nav_every == 0 */
     int publish_due;
     int ended;
-    int64_t last_progress_ns;
+    harness_progress_t pr;
 } node_t;
 
 static void usage(FILE *f)
@@ -196,21 +196,15 @@ static void publish_factor(node_t *nd, const ins_factor_t *f)
 
 static void progress(node_t *nd, int final)
 {
-    int64_t now;
     const ins_counters_t *c = &nd->ins.c;
     if (!nd->o.progress) {
         return;
     }
-    now = harness_now_ns();
-    if (!final && now - nd->last_progress_ns < 200000000LL) {
-        return;
-    }
-    nd->last_progress_ns = now;
-    fprintf(stderr, "\rse23-ins: t = %7.1f s  samples %lld  rejected %lld  gnss %lld%s",
-            (double)nd->ins.t_ns * 1e-9, (long long)c->imu_used,
-            (long long)(c->imu_nonfinite + c->imu_range + c->imu_duplicate +
-                        c->imu_out_of_order + c->imu_bad_time + c->imu_bad_dt),
-            (long long)c->gnss_used, final ? "\n" : "");
+    harness_progress(&nd->pr, final, "se23-ins: t = %7.1f s  samples %lld  rejected %lld  gnss %lld",
+                     (double)nd->ins.t_ns * 1e-9, (long long)c->imu_used,
+                     (long long)(c->imu_nonfinite + c->imu_range + c->imu_duplicate +
+                                 c->imu_out_of_order + c->imu_bad_time + c->imu_bad_dt),
+                     (long long)c->gnss_used);
 }
 
 static void on_imu(const lcm_recv_buf_t *rb, const char *ch, void *user)
@@ -338,6 +332,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "se23-ins: invalid configuration\n");
         return 2;
     }
+    harness_progress_init(&nd.pr);
     nd.nav_every = llround(1.0 / (cfg.dt_nominal * nd.o.nav_rate));
     if (nd.nav_every < 1) {
         nd.nav_every = 1;

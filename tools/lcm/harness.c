@@ -5,9 +5,11 @@
 #include <errno.h>
 #include <math.h>
 #include <signal.h>
+#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <unistd.h>
 
 #define DEG (3.14159265358979323846 / 180.0)
 #define G0 9.80665
@@ -244,5 +246,30 @@ void harness_sleep_until_ns(int64_t t_ns)
     ts.tv_sec = (time_t)(t_ns / 1000000000LL);
     ts.tv_nsec = (long)(t_ns % 1000000000LL);
     while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, NULL) == EINTR) {
+    }
+}
+
+void harness_progress_init(harness_progress_t *p)
+{
+    p->tty = isatty(fileno(stderr));
+    p->last_ns = harness_now_ns();
+}
+
+void harness_progress(harness_progress_t *p, int final, const char *fmt, ...)
+{
+    const int64_t now = harness_now_ns();
+    va_list ap;
+    if (!final && now - p->last_ns < (p->tty ? 200000000LL : 10000000000LL)) {
+        return;
+    }
+    p->last_ns = now;
+    if (p->tty) {
+        fputc('\r', stderr);
+    }
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    if (final || !p->tty) {
+        fputc('\n', stderr);
     }
 }

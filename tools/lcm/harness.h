@@ -102,4 +102,20 @@ int64_t harness_now_ns(void);
 /** Sleeps until the monotonic clock reaches t_ns. */
 void harness_sleep_until_ns(int64_t t_ns);
 
+/** A progress line on stderr (see harness_progress). */
+typedef struct {
+    int tty;         /**< stderr is a terminal */
+    int64_t last_ns; /**< when the last line was printed */
+} harness_progress_t;
+
+/** p = a progress line that has printed nothing yet. */
+void harness_progress_init(harness_progress_t *p);
+
+/**
+ * Prints the progress line fmt, ... on stderr. On a terminal it is redrawn
+ * in place ("\r") at most every 0.2 s; otherwise (a log) it is a plain line
+ * at most every 10 s. A final line is always printed and ends the line.
+ */
+void harness_progress(harness_progress_t *p, int final, const char *fmt, ...);
+
 #endif /* SE23_HARNESS_H */

@@ -1,21 +1,22 @@
 /* se23-paper-table: reproduces the paper's Table "Higher-order errors for a
  * low-cost IMU (1 deg/s - 100 mg)" (section 4.2).
  *
- * The smooth 3D UAV trajectory of uav.h is sampled at 100 Hz. Its samples
- * are cut into consecutive preintegrated factors of T = 1 s, 10 s and 60 s,
- * each integrated once at the bias estimate bbar = 0 (se23_preint_unc_add,
- * once with the exact input matrix B_k and once with the paper's basic
- * dt I_{9,6}). Then, for each of `draws` random biases db (per axis
- * N(0, (1 deg/s)^2) gyro and N(0, (100 mg)^2) accelerometer), every factor
- * is re-integrated from the samples plus db (se23_preint_add) and compared
- * with its three first-order corrections to bhat = db:
- *   classical  Forster et al. 2017 (se23_preint_unc_correct_classic)
- *   basic      Delta exp(J db), J with B_k = dt I_{9,6} (paper eq. biascor)
- *   exact      Delta exp(J db), J with the exact B_k (DESIGN.md)
+ * The smooth 3D UAV trajectory of uav.h is sampled at 100 Hz and cut into
+ * consecutive preintegrated factors of T = 1 s, 10 s and 60 s, each
+ * integrated once at the bias estimate bbar = 0 (rows.h). For every factor,
+ * `draws` fresh bias changes db are drawn, the factor is re-integrated with
+ * each and compared with the first-order corrections of rows.h. Two draw
+ * schemes, one table each:
+ *   fixed  |db_g| = 1 deg/s and |db_a| = 100 mg exactly, independent
+ *          uniform directions (the paper's "1 deg/s - 100 mg"; default)
+ *   gauss  per axis N(0, (1 deg/s)^2) gyro, N(0, (100 mg)^2) accel
  * The velocity (position) RMS is sqrt(mean |DV_corr - DV_reint|^2) (resp.
  * DX) over every factor and draw. The paper's numbers are printed under
- * ours. With --check the program fails unless the exact correction is no
- * worse than the classical one in velocity RMS at every T.
+ * ours, as printed in the paper. With --check the program fails unless, in
+ * the fixed table, the paper's ordering in velocity holds: proposed (basic
+ * B_k) <= classical (Forster et al.'s pipeline) at every T, and se23's
+ * exact B_k <= basic at T = 1 s (where B_k's O(dt) term is not swamped by
+ * the O(db^2) terms that all first-order corrections share).
  *
  * Usage: se23-paper-table [--duration S] [--draws N] [--seed N] [--check]
  *                         [--traj FILE.csv]
@@ -26,38 +27,43 @@
 #include <string.h>
 
 #include "../montecarlo/paper_tool.h"
-#include "se23/preint.h"
-#include "se23/preint_unc.h"
+#include "rows.h"
 #include "se23_rng.h"
 #include "uav.h"
 
 #define HZ 100.0
 #define PI 3.14159265358979323846
-#define SIGMA_G (PI / 180.0)      /* 1 deg/s [rad/s] */
-#define SIGMA_A (0.1 * 9.80665)   /* 100 mg [m/s^2] */
+#define BIAS_G (PI / 180.0)    /* 1 deg/s [rad/s] */
+#define BIAS_A (0.1 * 9.80665) /* 100 mg [m/s^2] */
 
-enum { CLASSIC, BASIC, EXACT, NONE, N_METHODS };
-static const char *const method_name[N_METHODS] = {
-    "Classical (Forster et al.), this run",
-    "Exponential, basic B_k = dt I_{9,6}, this run",
-    "Exponential, exact B_k, this run",
-    "No correction, this run"};
+enum { FIXED, GAUSS, N_SCHEMES };
+static const char *const scheme_name[N_SCHEMES] = {
+    "fixed magnitude |b_g| = 1 deg/s, |b_a| = 100 mg, uniform directions",
+    "per axis N(0, (1 deg/s)^2) gyro, N(0, (100 mg)^2) accel"};
+
+static const char *const row_name[N_ROWS] = {
+    "Classical: Forster et al. (Euler Deltas)",
+    "Forster Jacobians on exact Deltas",
+    "Proposed: exponential, B_k = dt I_{9,6}",
+    "se23: exponential, exact B_k",
+    "No correction"};
 
 #define N_T 3
 static const int T_sec[N_T] = {1, 10, 60};
-/* The paper's Table: velocity RMS [m/s] and position RMS [m] at T = 1, 10,
- * 60 s; "Proposed" is the exponential correction (basic B_k). */
-static const double paper_v[2][N_T] = {{6.9e-3, 1.25, 151.5}, {9.375e-4, 0.37, 70.5}};
-static const double paper_p[2][N_T] = {{0.0016, 3.66, 2405.8}, {0.0015, 2.57, 2126.5}};
+/* The paper's Table as printed: velocity RMS [m/s], position RMS [m] at
+ * T = 1, 10, 60 s; rows classical, proposed. */
+static const char *const paper_cells[2][2 * N_T] = {
+    {"6.9e-3", "1.25", "151.5", "0.0016", "3.66", "2405.8"},
+    {"9.375e-4", "0.37", "70.5", "0.0015", "2.57", "2126.5"}};
 
+/* One row's RMS errors: vp[0] velocity [m/s], vp[1] position [m], per T. */
 typedef struct {
-    double v2, p2; /* sums of squared errors */
-    long n;
-} acc_t;
+    double vp[2][N_T];
+} rms_t;
 
 typedef struct {
     long duration; /* [s] */
-    int draws;
+    int draws;     /* per factor */
     unsigned long seed;
     int check;
     const char *traj;
@@ -65,14 +71,9 @@ typedef struct {
 
 #define PROG "se23-paper-table"
 
-static void usage(void)
-{
-    paper_usage(PROG " [--duration S] [--draws N] [--seed N] [--check] [--traj FILE.csv]");
-}
-
 static options_t parse(int argc, char **argv)
 {
-    options_t o = {600, 50, 1, 0, NULL};
+    options_t o = {600, 200, 1, 0, NULL};
     for (int i = 1; i < argc; ++i) {
         const int more = i + 1 < argc;
         if (!strcmp(argv[i], "--duration") && more) {
@@ -86,95 +87,29 @@ static options_t parse(int argc, char **argv)
         } else if (!strcmp(argv[i], "--traj") && more) {
             o.traj = argv[++i];
         } else {
-            usage();
+            paper_usage(PROG " [--duration S] [--draws N] [--seed N] [--check] [--traj FILE.csv]");
         }
     }
     if (o.duration < 60 || o.draws < 1) {
-        fprintf(stderr, "se23-paper-table: need --duration >= 60 and --draws >= 1\n");
+        fprintf(stderr, PROG ": need --duration >= 60 and --draws >= 1\n");
         exit(2);
     }
     return o;
 }
 
-/* Sample k of the trajectory plus the bias change (dbg, dba). */
-static se23_imu_sample_t sample(long k, const double db[6])
+static void draw_bias(int scheme, se23t_rng_t *rng, double db[6])
 {
-    double w[3], f[3];
-    uav_sample(k, HZ, w, f);
-    se23_imu_sample_t s;
-    for (int i = 0; i < 3; ++i) {
-        s.w_ib_b.v[i] = w[i] + db[i];
-        s.f_b.v[i] = f[i] + db[3 + i];
-    }
-    s.dt = 1.0 / HZ;
-    return s;
-}
-
-static void add_error(acc_t *a, const se23_pose_t *approx, const se23_pose_t *ref)
-{
-    for (int i = 0; i < 3; ++i) {
-        const double ev = approx->v.v[i] - ref->v.v[i];
-        const double ep = approx->p.v[i] - ref->p.v[i];
-        a->v2 += ev * ev;
-        a->p2 += ep * ep;
-    }
-    a->n += 1;
-}
-
-/* The factors of T seconds at bbar = 0, with the exact (ex) and basic (ba)
- * input matrices; nwin factors of n samples. */
-static void build_factors(long n, long nwin, se23_preint_unc_t *ex, se23_preint_unc_t *ba)
-{
-    const se23_vec3_t zero = {{0, 0, 0}};
-    const se23_imu_noise_t quiet = {0, 0, 0, 0};
-    const double no_bias[6] = {0};
-    for (long w = 0; w < nwin; ++w) {
-        se23_status_t st = se23_preint_unc_reset(&zero, &zero, SE23_INPUT_JAC_EXACT, &ex[w]);
-        if (st == SE23_OK) {
-            st = se23_preint_unc_reset(&zero, &zero, SE23_INPUT_JAC_BASIC, &ba[w]);
+    if (scheme == FIXED) {
+        se23_vec3_t g, a;
+        se23t_random_axis_angle(rng, BIAS_G, &g);
+        se23t_random_axis_angle(rng, BIAS_A, &a);
+        for (int i = 0; i < 3; ++i) {
+            db[i] = g.v[i];
+            db[3 + i] = a.v[i];
         }
-        for (long k = 0; k < n && st == SE23_OK; ++k) {
-            const se23_imu_sample_t s = sample(w * n + k, no_bias);
-            st = se23_preint_unc_add(&ex[w], &s, &quiet);
-            if (st == SE23_OK) {
-                st = se23_preint_unc_add(&ba[w], &s, &quiet);
-            }
-        }
-        if (st != SE23_OK) {
-            paper_die(PROG, "se23_preint_unc_add", st);
-        }
-    }
-}
-
-/* Errors of the corrections of every factor of T seconds to the bias change
- * db, against re-integration. */
-static void score(long n, long nwin, const se23_preint_unc_t *ex,
-                  const se23_preint_unc_t *ba, const double db[6], acc_t acc[N_METHODS])
-{
-    const se23_vec3_t bg = {{db[0], db[1], db[2]}}, bacc = {{db[3], db[4], db[5]}};
-    for (long w = 0; w < nwin; ++w) {
-        se23_preint_t ref, corr[N_METHODS];
-        se23_preint_reset(&ref);
-        se23_status_t st = SE23_OK;
-        for (long k = 0; k < n && st == SE23_OK; ++k) {
-            const se23_imu_sample_t s = sample(w * n + k, db);
-            st = se23_preint_add(&ref, &s);
-        }
-        if (st == SE23_OK) {
-            st = se23_preint_unc_correct_classic(&ex[w], &bg, &bacc, &corr[CLASSIC]);
-        }
-        if (st == SE23_OK) {
-            st = se23_preint_unc_correct(&ba[w], &bg, &bacc, &corr[BASIC]);
-        }
-        if (st == SE23_OK) {
-            st = se23_preint_unc_correct(&ex[w], &bg, &bacc, &corr[EXACT]);
-        }
-        if (st != SE23_OK) {
-            paper_die(PROG, "re-integration or correction", st);
-        }
-        corr[NONE] = ex[w].f;
-        for (int m = 0; m < N_METHODS; ++m) {
-            add_error(&acc[m], &corr[m].delta, &ref.delta);
+    } else {
+        for (int i = 0; i < 6; ++i) {
+            db[i] = (i < 3 ? BIAS_G : BIAS_A) * se23t_normal(rng);
         }
     }
 }
@@ -195,16 +130,69 @@ static void write_traj(const char *path, long duration)
     fclose(fp);
 }
 
-static void print_row(const char *name, const double v[N_T], const double p[N_T])
+static void print_cells(const char *name, const char *const cells[2 * N_T])
 {
-    printf("| %-46s |", name);
-    for (int t = 0; t < N_T; ++t) {
-        printf(" %9.3g |", v[t]);
-    }
-    for (int t = 0; t < N_T; ++t) {
-        printf(" %9.3g |", p[t]);
+    printf("| %-42s |", name);
+    for (int c = 0; c < 2 * N_T; ++c) {
+        printf(" %9s |", cells[c]);
     }
     printf("\n");
+}
+
+static void print_row(const char *name, const rms_t *r)
+{
+    char buf[2 * N_T][16];
+    const char *cells[2 * N_T];
+    for (int c = 0; c < 2 * N_T; ++c) {
+        snprintf(buf[c], sizeof buf[c], "%.3g", r->vp[c / N_T][c % N_T]);
+        cells[c] = buf[c];
+    }
+    print_cells(name, cells);
+}
+
+static void print_table(int scheme, const rms_t rms[N_ROWS])
+{
+    static const char *const head[2 * N_T] = {"v 1 s", "v 10 s", "v 60 s",
+                                               "p 1 s", "p 10 s", "p 60 s"};
+    printf("Biases: %s\n", scheme_name[scheme]);
+    printf("| RMS error: velocity [m/s], position [m]    |");
+    for (int c = 0; c < 2 * N_T; ++c) {
+        printf(" %9s |", head[c]);
+    }
+    printf("\n|%s|", "--------------------------------------------");
+    for (int c = 0; c < 2 * N_T; ++c) {
+        printf("%s|", "----------:");
+    }
+    printf("\n");
+    print_row(row_name[ROW_FORSTER], &rms[ROW_FORSTER]);
+    print_cells("Classical, paper", paper_cells[0]);
+    print_row(row_name[ROW_FORSTER_EXACT], &rms[ROW_FORSTER_EXACT]);
+    print_row(row_name[ROW_BASIC], &rms[ROW_BASIC]);
+    print_cells("Proposed, paper", paper_cells[1]);
+    print_row(row_name[ROW_EXACT], &rms[ROW_EXACT]);
+    print_row(row_name[ROW_NONE], &rms[ROW_NONE]);
+    printf("\n");
+}
+
+/* One line of the check; returns 1 if a > b. */
+static int check_le(const char *what, int t, double a, double b)
+{
+    const int ok = a <= b;
+    printf("%s T = %2d s: velocity RMS %s: %.4g %s %.4g\n", ok ? "ok  " : "FAIL", T_sec[t], what,
+           a, ok ? "<=" : ">", b);
+    return !ok;
+}
+
+/* The check of the file comment, on the rows of one table. */
+static int check_order(const rms_t rms[N_ROWS])
+{
+    int fail = 0;
+    for (int t = 0; t < N_T; ++t) {
+        fail |= check_le("proposed (basic B_k) <= classical", t, rms[ROW_BASIC].vp[0][t],
+                         rms[ROW_FORSTER].vp[0][t]);
+    }
+    fail |= check_le("exact B_k <= basic", 0, rms[ROW_EXACT].vp[0][0], rms[ROW_BASIC].vp[0][0]);
+    return fail;
 }
 
 int main(int argc, char **argv)
@@ -213,63 +201,51 @@ int main(int argc, char **argv)
     if (o.traj != NULL) {
         write_traj(o.traj, o.duration);
     }
-    double (*db)[6] = malloc(sizeof(double[6]) * (size_t)o.draws);
-    if (db == NULL) {
+    const long n_all = (long)((double)o.duration * HZ);
+    raw_sample_t *wf = malloc(sizeof *wf * (size_t)n_all);
+    if (wf == NULL) {
         return 2;
     }
-    se23t_rng_t rng; /* the tests' seeded generator (tests/support) */
-    se23t_rng_seed(&rng, o.seed);
-    for (int d = 0; d < o.draws; ++d) {
-        for (int i = 0; i < 6; ++i) {
-            db[d][i] = (i < 3 ? SIGMA_G : SIGMA_A) * se23t_normal(&rng);
-        }
+    for (long k = 0; k < n_all; ++k) {
+        uav_sample(k, HZ, wf[k].w, wf[k].f);
     }
-    double v[N_METHODS][N_T], p[N_METHODS][N_T];
+    se23t_rng_t rng[N_SCHEMES];
+    for (int s = 0; s < N_SCHEMES; ++s) {
+        se23t_rng_seed(&rng[s], o.seed + (unsigned long)s);
+    }
+    static row_acc_t acc[N_SCHEMES][N_T][N_ROWS];
     long factors[N_T];
     for (int t = 0; t < N_T; ++t) {
-        const long n = (long)(T_sec[t] * HZ), nwin = o.duration / T_sec[t];
-        se23_preint_unc_t *ex = malloc(sizeof *ex * (size_t)nwin);
-        se23_preint_unc_t *ba = malloc(sizeof *ba * (size_t)nwin);
-        if (ex == NULL || ba == NULL) {
-            return 2;
+        const long n = (long)(T_sec[t] * HZ);
+        factors[t] = o.duration / T_sec[t];
+        for (long w = 0; w < factors[t]; ++w) {
+            factor_t fa;
+            factor_build(&fa, wf + w * n, n, 1.0 / HZ);
+            for (int s = 0; s < N_SCHEMES; ++s) {
+                for (int d = 0; d < o.draws; ++d) {
+                    double db[6];
+                    draw_bias(s, &rng[s], db);
+                    factor_score(&fa, db, acc[s][t]);
+                }
+            }
         }
-        build_factors(n, nwin, ex, ba);
-        acc_t acc[N_METHODS];
-        memset(acc, 0, sizeof acc);
-        for (int d = 0; d < o.draws; ++d) {
-            score(n, nwin, ex, ba, db[d], acc);
-        }
-        for (int m = 0; m < N_METHODS; ++m) {
-            v[m][t] = sqrt(acc[m].v2 / (double)acc[m].n);
-            p[m][t] = sqrt(acc[m].p2 / (double)acc[m].n);
-        }
-        factors[t] = nwin;
-        free(ex);
-        free(ba);
     }
-    free(db);
+    free(wf);
 
-    printf("UAV trajectory %ld s at %.0f Hz, %d bias draws (seed %lu), factors of "
-           "1 s / 10 s / 60 s: %ld / %ld / %ld\n\n",
-           o.duration, HZ, o.draws, o.seed, factors[0], factors[1], factors[2]);
-    printf("| %-46s | velocity RMS [m/s]            | position RMS [m]              |\n", "");
-    printf("| %-46s | %9s | %9s | %9s | %9s | %9s | %9s |\n", "T", "1 s", "10 s", "60 s",
-           "1 s", "10 s", "60 s");
-    printf("|%s|-----------|-----------|-----------|-----------|-----------|-----------|\n",
-           "------------------------------------------------");
-    print_row(method_name[CLASSIC], v[CLASSIC], p[CLASSIC]);
-    print_row("Classical, paper", paper_v[0], paper_p[0]);
-    print_row(method_name[BASIC], v[BASIC], p[BASIC]);
-    print_row(method_name[EXACT], v[EXACT], p[EXACT]);
-    print_row("Proposed (exponential), paper", paper_v[1], paper_p[1]);
-    print_row(method_name[NONE], v[NONE], p[NONE]);
-
-    int fail = 0;
-    for (int t = 0; t < N_T; ++t) {
-        const int ok = v[EXACT][t] <= v[CLASSIC][t];
-        printf("%s T = %2d s: velocity RMS exact %.4g %s classical %.4g\n", ok ? "ok  " : "FAIL",
-               T_sec[t], v[EXACT][t], ok ? "<=" : ">", v[CLASSIC][t]);
-        fail |= !ok;
+    printf("UAV trajectory %ld s at %.0f Hz; factors of 1 s / 10 s / 60 s: %ld / %ld / %ld, "
+           "%d fresh bias draws each (seed %lu)\n\n",
+           o.duration, HZ, factors[0], factors[1], factors[2], o.draws, o.seed);
+    rms_t rms[N_SCHEMES][N_ROWS];
+    for (int s = 0; s < N_SCHEMES; ++s) {
+        for (int r = 0; r < N_ROWS; ++r) {
+            for (int t = 0; t < N_T; ++t) {
+                const row_acc_t *a = &acc[s][t][r];
+                rms[s][r].vp[0][t] = sqrt(a->v2 / (double)a->n);
+                rms[s][r].vp[1][t] = sqrt(a->p2 / (double)a->n);
+            }
+        }
+        print_table(s, rms[s]);
     }
+    const int fail = check_order(rms[FIXED]);
     return (o.check && fail) ? 1 : 0;
 }

@@ -281,6 +281,12 @@ static int64_t every(double base_rate, double rate)
     return n < 1 ? 1 : n;
 }
 
+/* The progress line: simulated time t out of total [s]. */
+static void progress(harness_progress_t *pr, int final, double t, double total)
+{
+    harness_progress(pr, final, "se23-sim: t = %7.1f / %.1f s", t, total);
+}
+
 int main(int argc, char **argv)
 {
     sim_opts_t o;
@@ -290,7 +296,8 @@ int main(int argc, char **argv)
     imu_err_t err;
     rng_t rng_gnss, rng_init;
     lcm_t *lc;
-    int64_t dt_ns, n, k, n_truth, n_gnss, wall0, last_progress = 0, gnss_seq = 0;
+    int64_t dt_ns, n, k, n_truth, n_gnss, wall0, gnss_seq = 0;
+    harness_progress_t pr;
     int nsub;
     double dt;
 
@@ -325,6 +332,7 @@ int main(int argc, char **argv)
     publish_truth(lc, 0, 0, &x, err.b_g, err.b_a);
 
     wall0 = harness_now_ns();
+    harness_progress_init(&pr);
     for (k = 1; k <= n && !harness_stop_requested(); k++) {
         double w_true[3], f_true[3], b_g[3], b_a[3];
         ld_vec3_t w_ld, f_ld;
@@ -353,16 +361,11 @@ int main(int argc, char **argv)
             publish_gnss(lc, s.t_ns, ++gnss_seq, &o, &x, &rng_gnss);
         }
         if (o.progress) {
-            int64_t now = harness_now_ns();
-            if (now - last_progress > 200000000LL || k == n) {
-                fprintf(stderr, "\rse23-sim: t = %7.1f / %.1f s", (double)s.t_ns * 1e-9,
-                        (double)n * dt);
-                last_progress = now;
-            }
+            progress(&pr, 0, (double)s.t_ns * 1e-9, (double)n * dt);
         }
     }
     if (o.progress) {
-        fprintf(stderr, "\n");
+        progress(&pr, 1, (double)(k - 1) * dt, (double)n * dt);
     }
     publish_info(lc, HARNESS_CH_SIM_END, &o, &env);
     lcm_destroy(lc);
