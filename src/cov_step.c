@@ -95,7 +95,6 @@ typedef struct {
     se23_real_t dt;
     const se23_input_blocks_t *Bt;
     const se23_step_noise_t *q;
-    se23_input_blocks_t Bq;  /* Bt N: columns scaled by qg, qa */
     int bias;                /* nonzero for 15 states */
     se23_input_blocks_t Y;   /* G C (bias states only) */
     const se23_real_t *P;    /* P, upper triangle read */
@@ -114,14 +113,14 @@ static void acc_input_terms(const step_t *s, int i, int j, se23_mat3_t *E)
         if (i == PHI && k == ACC) {
             continue;
         }
+        se23_mat3_t Zq; /* Z_jk + q_k Bt_jk, Z = 0 without bias states */
         if (s->bias) {
-            se23_mat3_t Zq; /* Z_jk + Bt_jk q_k */
             blk_load(s->out, s->stride, 3 * j, 9 + 3 * k, &Zq);
-            se23_m3_axpy(&Zq, SE23_R(1), &s->Bq.blk[j][k], &Zq);
-            se23_m3_acc_mul_nt(E, &s->Bt->blk[i][k], &Zq);
+            se23_m3_axpy(&Zq, k == GYR ? s->q->qg : s->q->qa, &s->Bt->blk[j][k], &Zq);
         } else {
-            se23_m3_acc_mul_nt(E, &s->Bt->blk[i][k], &s->Bq.blk[j][k]);
+            se23_m3_scale(&s->Bt->blk[j][k], k == GYR ? s->q->qg : s->q->qa, &Zq);
         }
+        se23_m3_acc_mul_nt(E, &s->Bt->blk[i][k], &Zq);
     }
 }
 
@@ -275,10 +274,6 @@ void se23_cov_step(const se23_pose_t *U, se23_real_t dt,
     s.Bt = Bt;
     s.q = q;
     s.bias = (n == SE23_GAUSS_N_BIAS);
-    for (int i = PHI; i <= RHO; ++i) {
-        se23_m3_scale(&Bt->blk[i][GYR], q->qg, &s.Bq.blk[i][GYR]);
-        se23_m3_scale(&Bt->blk[i][ACC], q->qa, &s.Bq.blk[i][ACC]);
-    }
     s.P = P;
     s.out = out;
     s.stride = stride;
@@ -288,6 +283,49 @@ void se23_cov_step(const se23_pose_t *U, se23_real_t dt,
     pose_blocks(&s);
     if (s.bias) {
         bias_blocks(&s);
+    }
+}
+
+/* Block (a, b) of a symmetric P from its upper triangle. */
+static void blk_load_sym(const se23_real_t *P, int stride, int a, int b,
+                         se23_mat3_t *A)
+{
+    if (a <= b) {
+        blk_load(P, stride, 3 * a, 3 * b, A);
+    } else {
+        blk_load(P, stride, 3 * b, 3 * a, A);
+        se23_m3_transpose(A, A);
+    }
+}
+
+void se23_cov_nu_shear(const se23_vec3_t *a, int n, const se23_real_t *P,
+                       se23_real_t *out, int stride)
+{
+    const int nb = (n == SE23_GAUSS_N_BIAS) ? 5 : 3; /* 3x3 blocks per row */
+    se23_mat3_t Rj[SE23_GAUSS_NMAX / 3], X;
+    /* R_j = X_nu,j + a^ X_rho,j from the old blocks: row nu of M P. */
+    for (int j = 0; j < nb; ++j) {
+        blk_load_sym(P, stride, NU, j, &Rj[j]);
+        blk_load_sym(P, stride, RHO, j, &X);
+        se23_m3_acc_skew_mul(&Rj[j], SE23_R(1), a, &X);
+    }
+    if (out != P) {
+        for (int i = 0; i < n; ++i) {
+            for (int j = 0; j < n; ++j) {
+                out[stride * i + j] = P[stride * i + j];
+            }
+        }
+    }
+    /* Row and column nu of M P M^T; (nu, nu) = R_nu + R_rho (a^)^T
+     * = R_nu - R_rho a^. */
+    const se23_vec3_t neg_a = {{-a->v[0], -a->v[1], -a->v[2]}};
+    se23_m3_acc_mul_skew(&Rj[NU], &Rj[RHO], &neg_a);
+    for (int j = 0; j < nb; ++j) {
+        if (j == NU) {
+            blk_store_sym(out, stride, 3 * NU, &Rj[NU]);
+        } else {
+            blk_store(out, stride, 3 * NU, 3 * j, &Rj[j], 1);
+        }
     }
 }
 

@@ -60,6 +60,15 @@ void se23_cov_step(const se23_pose_t *U, se23_real_t dt,
                    const se23_input_blocks_t *Bt, const se23_step_noise_t *q,
                    int n, const se23_real_t *P, se23_real_t *out, int stride);
 
+/**
+ * out = M P M^T, M = I + [[0, 0, 0], [0, 0, a^], [0, 0, 0]] (identity on
+ * the bias blocks): the carried <-> user change of error coordinates of
+ * gauss.h with a = -+ Rbar^T Omega. Only row and column nu change: about
+ * 20 n multiply-adds. out may alias P. No checks.
+ */
+void se23_cov_nu_shear(const se23_vec3_t *a, int n, const se23_real_t *P,
+                       se23_real_t *out, int stride);
+
 /** J <- F_k J + B_k = D (G J + Bt) in place (9x6, the bias Jacobian
  *  recursion of paper eq. biascor). No checks. */
 void se23_cov_jac_step(const se23_pose_t *U, se23_real_t dt,

@@ -258,42 +258,29 @@ se23_status_t se23_gauss_predict(const se23_earth_model_t *model,
     se23_imu_sample_t c = *s; /* corrected inputs */
     se23_v3_axpy(&s->w_ib_b, SE23_R(1), &g->b_g, &c.w_ib_b);
     se23_v3_axpy(&s->f_b, SE23_R(1), &g->b_a, &c.f_b);
-    se23_pose_t U, T_next;
-    se23_increment_parts_t parts;
     se23_step_noise_t q;
-    st = se23_imu_step_ups(model, &g->T, &c, &T_next, &U, &parts);
+    st = se23_imu_sample_check(&c, model->dt_max);
     if (st == SE23_OK) {
         st = se23_step_noise(noise, c.dt, &q);
     }
     if (st != SE23_OK) {
         return st;
     }
+    /* The mean goes straight to out->T (nothing fails after the step, and
+     * the covariance step reads only g->P). */
+    se23_pose_t U;
+    se23_increment_parts_t parts;
+    st = se23_imu_step_ups(model, &g->T, &c, &out->T, &U, &parts);
+    if (st != SE23_OK) {
+        return st;
+    }
     se23_input_blocks_t Bt;
     se23_input_blocks(kind, &parts, &U.R, &c.f_b, c.dt, &Bt);
-    propagate_cov(g, &U, &Bt, &q, c.dt, out);
-    out->T = T_next;
+    se23_cov_step(&U, c.dt, &Bt, &q, g->n, g->P.m, out->P.m, S);
+    out->b_g = g->b_g;
+    out->b_a = g->b_a;
+    out->n = g->n;
     return SE23_OK;
-}
-
-/* M = I + sign [[0,0,0],[0,0,w^],[0,0,0]] on (xi, db), w = Rbar^T Omega. */
-typedef struct {
-    se23_vec3_t w;
-    se23_real_t sign;
-    int n;
-} m_ctx_t;
-
-static void m_map(const void *ctx, const se23_real_t *x, se23_real_t *y)
-{
-    const m_ctx_t *c = (const m_ctx_t *)ctx;
-    se23_vec3_t rho, wr, nu;
-    for (int i = 0; i < c->n; ++i) {
-        y[i] = x[i];
-    }
-    se23_v3_load(&x[SE23_IDX_RHO], &rho);
-    se23_v3_load(&x[SE23_IDX_NU], &nu);
-    se23_v3_cross(&c->w, &rho, &wr);
-    se23_v3_axpy(&nu, c->sign, &wr, &nu);
-    se23_v3_store(&nu, &y[SE23_IDX_NU]);
 }
 
 static se23_status_t convert(const se23_earth_model_t *model,
@@ -310,21 +297,21 @@ static se23_status_t convert(const se23_earth_model_t *model,
     if (st != SE23_OK) {
         return st;
     }
-    m_ctx_t ctx;
-    ctx.sign = sign;
-    ctx.n = g->n;
-    se23_m3_tmul_v3(&g->T.R, &model->w_ie_n, &ctx.w);
+    /* M = I + sign [[0,0,0],[0,0,w^],[0,0,0]], w = Rbar^T Omega (gauss.h). */
+    se23_vec3_t a;
+    se23_m3_tmul_v3(&g->T.R, &model->w_ie_n, &a);
+    se23_v3_scale(&a, sign, &a);
     se23_pose_t T;
     if (sign < SE23_R(0)) {
         se23_imu_user_from_carried(model, &g->T, &T);
     } else {
         se23_imu_carried_from_user(model, &g->T, &T);
     }
-    se23_cov_congruence(m_map, &ctx, g->n, g->P.m, out->P.m);
+    se23_cov_nu_shear(&a, g->n, g->P.m, out->P.m, S);
     out->T = T;
     out->b_g = g->b_g;
     out->b_a = g->b_a;
-    out->n = ctx.n;
+    out->n = g->n;
     return SE23_OK;
 }
 
