@@ -93,7 +93,9 @@ void se23_imu_transition(const se23_pose_t *gamma, const se23_pose_t *T,
     se23_pose_t P = *T; /* Phi_t(T) */
     se23_v3_axpy(&P.p, t, &P.v, &P.p);
     se23_compose(&P, ups, &P);
-    se23_compose(gamma, &P, &P);
+    if (gamma != NULL) {
+        se23_compose(gamma, &P, &P);
+    }
     /* Each product leaves R about one epsilon off SO(3), and with repeated
      * samples the error adds up linearly: in float a constant sample exceeds
      * SE23_CFG_ROT_TOL within ~100 steps. One Newton-Schulz step whenever

@@ -29,9 +29,7 @@ void se23_preint_reset(se23_preint_t *f)
 void se23_preint_add_increment(se23_preint_t *f, const se23_pose_t *ups,
                                se23_real_t dt)
 {
-    se23_pose_t identity;
-    se23_identity(&identity);
-    se23_imu_transition(&identity, &f->delta, ups, dt, &f->delta);
+    se23_imu_transition(NULL, &f->delta, ups, dt, &f->delta); /* Gamma = I */
     f->dt += dt;
     f->n += 1u;
 }

@@ -84,10 +84,11 @@ se23_status_t se23_imu_increment_euler(const se23_imu_sample_t *s,
 /**
  * out = Gamma Phi_t(T) Upsilon  (paper eq. discrete), Phi_t(R, v, p) =
  * (R, v, p + t v). The building block of se23_imu_step (Gamma = Gamma'(dt),
- * one sample), of preintegration (Gamma = I, accumulating Deltas) and of
- * prediction (Gamma = Gamma'(Delta t), one factor). out.R is passed through
- * se23_so3_normalize, so that rounding drift never accumulates (a no-op
- * while the drift is below 4 eps). No checks: NaN in gives NaN out.
+ * one sample), of preintegration (Gamma = I, accumulating Deltas: pass
+ * gamma = NULL, which skips the product) and of prediction (Gamma =
+ * Gamma'(Delta t), one factor). out.R is re-orthonormalised (one
+ * Newton-Schulz step once |R^T R - I| passes 4 eps), so that rounding drift
+ * never accumulates. No checks: NaN in gives NaN out.
  */
 void se23_imu_transition(const se23_pose_t *gamma, const se23_pose_t *T,
                          const se23_pose_t *ups, se23_real_t t,

@@ -340,6 +340,23 @@ static void test_imu_step_rotating_earth_keeps_body_at_rest(void **state)
     }
 }
 
+/* gamma = NULL is Gamma = I (preintegration), without the product. */
+static void test_imu_transition_null_gamma_is_identity(void **state)
+{
+    (void)state;
+    se23t_rng_t rng;
+    se23t_rng_seed(&rng, 78);
+    se23_pose_t I, T, U, with, without;
+    se23_identity(&I);
+    for (int n = 0; n < 20; ++n) {
+        se23t_random_pose(&rng, 10.0, &T);
+        se23t_random_pose(&rng, 1.0, &U);
+        se23_imu_transition(&I, &T, &U, SE23_R(0.01), &with);
+        se23_imu_transition(NULL, &T, &U, SE23_R(0.01), &without);
+        assert_memory_equal(&with, &without, sizeof with);
+    }
+}
+
 static void test_imu_step_keeps_rotation_orthonormal(void **state)
 {
     (void)state;
@@ -663,6 +680,7 @@ int main(void)
         cmocka_unit_test(test_imu_increment_euler_is_first_order),
         cmocka_unit_test(test_imu_step_flat_circle_is_exact),
         cmocka_unit_test(test_imu_step_rotating_earth_keeps_body_at_rest),
+        cmocka_unit_test(test_imu_transition_null_gamma_is_identity),
         cmocka_unit_test(test_imu_step_keeps_rotation_orthonormal),
         cmocka_unit_test(test_imu_step_recomputes_gamma_for_other_dt),
         cmocka_unit_test(test_imu_step_flat_is_paper_discrete2),

@@ -14,6 +14,7 @@
 #include "se23/gauss.h"
 #include "se23/imu.h"
 #include "se23/kalman.h"
+#include "se23/preint_unc.h"
 #include "se23/so3.h"
 
 static struct {
@@ -22,6 +23,7 @@ static struct {
     se23_imu_noise_t noise;
     se23_pose_t T;
     se23_gauss_t g9, g15, gout;
+    se23_preint_unc_t factor;
     se23_meas_t y;
     se23_vec3_t p_gnss, lever;
     se23_mat3_t cov;
@@ -72,6 +74,10 @@ static void setup(void)
         c.lever.v[i] = SE23_R(0.1) * (se23_real_t)(i + 1);
         c.cov.m[i][i] = SE23_R(4.0);
     }
+    (void)se23_preint_unc_reset(&c.g15.b_g, &c.g15.b_a, SE23_INPUT_JAC_EXACT, &c.factor);
+    for (i = 0; i < 20; ++i) {
+        (void)se23_preint_unc_add(&c.factor, &c.s, &c.noise);
+    }
 }
 
 /* Composite: one full propagation step (mean + covariance), rotating Earth. */
@@ -89,6 +95,12 @@ static int update_gnss15(void)
     se23_status_t st = se23_meas_pos_nav(&c.g15.T, &c.p_gnss, &c.lever, &c.cov, &c.y);
     return st != SE23_OK ? (int)st : (int)se23_kalman_update(&c.g15, &c.y, &c.gout, NULL);
 }
+/* Composite: one sample into a preintegrated factor (Deltas, P, J; no
+ * classical Jacobians), 20 samples in. */
+static int step_preint(void)
+{
+    return (int)se23_preint_unc_add(&c.factor, &c.s, &c.noise);
+}
 static int step_cov15_basic(void)
 {
     return (int)se23_gauss_predict(&c.model, &c.g15, &c.s, &c.noise, SE23_INPUT_JAC_BASIC, &c.gout);
@@ -98,6 +110,7 @@ const bench_step_t bench_steps[] = {
     {"STEP mean+cov n=9 (se23_gauss_predict)", setup, step_cov9},
     {"STEP mean+cov n=15 (se23_gauss_predict)", setup, step_cov15},
     {"STEP mean+cov n=15, basic B (se23_gauss_predict)", setup, step_cov15_basic},
+    {"STEP preintegration (se23_preint_unc_add, exact B, no classical Jacobians)", setup, step_preint},
     {"UPDATE GNSS position n=15 (se23_meas_pos_nav + se23_kalman_update)", setup, update_gnss15},
 };
 const int bench_n_steps = (int)(sizeof bench_steps / sizeof bench_steps[0]);
