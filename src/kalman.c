@@ -1,141 +1,132 @@
-/* Kalman update in exponential coordinates; see kalman.h. */
+/* Kalman update in exponential coordinates; see kalman.h.
+ *
+ * Structure. Only the 3-column blocks of H (phi, nu, rho, b_g, b_a) that
+ * hold a nonzero in the m rows take part: a runtime scan of H (fused with
+ * its finiteness check, 4 m n operations) keeps se23_meas_t dense and
+ * general. The covariance work (C = P H^T, S, its Cholesky factor, the
+ * gain and P+ = P - U U^T, with the operation count and the argument for
+ * that form) is in kalman_cov.c.
+ *
+ * Validation (types.h): the measurement is the caller's and is checked on
+ * every call (m; z and H finite; R symmetric PSD, m x m); the state g is
+ * trusted (n must be 9 or 15; se23_gauss_check only with
+ * SE23_CFG_DEEP_CHECKS).
+ *
+ * Order. Everything that can fail is decided before the first store: the
+ * covariance is stored first (its work arrays are then released), then the
+ * mean is retracted, which cannot fail: the correction is bounded
+ * (CORR_MAX) and the mean within MEAN_MAX, so every value stays finite, and
+ * R exp(phi^) is within SE23_CFG_ROT_TOL + a few eps of SO(3), which
+ * se23_so3_normalize repairs. The retraction (whose sin/cos may take
+ * newlib's large-argument reduction) thus never shares the stack with the
+ * covariance's work arrays. */
 #include "se23/kalman.h"
 
+#include <float.h>
+
 #include "argcheck.h"
-#include "cov.h"
+#include "kalman_cov.h"
 #include "linalg.h"
 #include "se23/se23.h"
+#include "se23/so3.h"
+#include "se23_math.h"
 
-enum { S = SE23_GAUSS_NMAX, M = SE23_MEAS_MMAX };
+enum { S = SE23_GAUSS_NMAX, M = SE23_MEAS_MMAX, NBLK = SE23_KALMAN_NBLK };
 
-/* x -> (I - K H) x on R^n; K n x m (stride M), H m x n (stride S). */
-typedef struct {
-    const se23_real_t *K;
-    const se23_real_t *H;
-    int n, m;
-} joseph_ctx_t;
+/* |dx_k| <= CORR_MAX: |phi|^2 <= 3 CORR_MAX^2 cannot overflow, and the
+ * entries of exp(phi^) and J(phi) (at most 3 in magnitude), so those of
+ * R J(phi) nu (at most 27 CORR_MAX), stay far below MEAN_MAX.
+ * |mean entry| <= MEAN_MAX: adding such a correction cannot overflow. */
+#if SE23_CFG_DOUBLE
+#define CORR_MAX SE23_R(1e150)
+#define MEAN_MAX (SE23_R(DBL_MAX) / SE23_R(4))
+#else
+#define CORR_MAX SE23_R(1e18)
+#define MEAN_MAX (SE23_R(FLT_MAX) / SE23_R(4))
+#endif
 
-static void joseph_map(const void *ctx, const se23_real_t *x, se23_real_t *y)
+/* Scans the first n columns of H in rows 0..m-1 once: returns 0 if an
+ * entry is not finite (x * 0 is 0 for finite x, NaN for NaN or Inf, and
+ * never overflows), else sets blk[0..*nb-1] to the 3-column blocks with a
+ * nonzero (a sum of magnitudes is > 0 exactly when one of them is). */
+static int scan_h(const se23_meas_t *y, int n, int blk[NBLK], int *nb)
 {
-    const joseph_ctx_t *c = (const joseph_ctx_t *)ctx;
-    se23_real_t hx[M];
-    for (int r = 0; r < c->m; ++r) {
-        se23_real_t s = SE23_R(0);
-        for (int j = 0; j < c->n; ++j) {
-            s += c->H[S * r + j] * x[j];
+    se23_real_t bad = SE23_R(0);
+    int count = 0;
+    for (int b = 0; b < n / 3; ++b) {
+        se23_real_t mag = SE23_R(0);
+        for (int r = 0; r < y->m; ++r) {
+            const se23_real_t *h = &y->H[S * r + 3 * b];
+            mag += se23_fabs(h[0]) + se23_fabs(h[1]) + se23_fabs(h[2]);
+            bad += h[0] * SE23_R(0) + h[1] * SE23_R(0) + h[2] * SE23_R(0);
         }
-        hx[r] = s;
-    }
-    for (int i = 0; i < c->n; ++i) {
-        se23_real_t s = x[i];
-        for (int r = 0; r < c->m; ++r) {
-            s -= c->K[M * i + r] * hx[r];
+        if (mag > SE23_R(0)) {
+            blk[count] = b;
+            ++count;
         }
-        y[i] = s;
     }
+    *nb = count;
+    return se23_is_finite(bad);
 }
 
-static se23_status_t check_meas(const se23_meas_t *y, int n)
+/* The caller's measurement: 1 <= m <= 9, z and the first n columns of H
+ * finite, R a valid covariance; blk, nb from scan_h. O(m n + m^3). */
+static se23_status_t check_meas(const se23_meas_t *y, int n, int blk[NBLK],
+                                int *nb)
 {
     const int m = y->m;
     if (m < 1 || m > M) {
         return SE23_ERR_DIM;
     }
-    if (!se23_all_finite(y->z, m)) {
+    if (!se23_all_finite(y->z, m) || !scan_h(y, n, blk, nb)) {
         return SE23_ERR_NONFINITE;
     }
-    for (int r = 0; r < m; ++r) {
-        if (!se23_all_finite(&y->H[S * r], n)) {
-            return SE23_ERR_NONFINITE;
-        }
-    }
-    return se23_cov_check(y->R, m, M);
+    return se23_meas_cov_check(y->R, m, M);
 }
 
-/* PHt = P H^T (n x m, stride M) and Sm = H PHt + R (m x m, stride M,
- * upper triangle computed and mirrored). */
-static void innovation_cov(const se23_real_t *P, const se23_meas_t *y, int n,
-                           se23_real_t *PHt, se23_real_t *Sm)
+/* Nonzero if every entry of the mean (v, p, biases) is within MEAN_MAX
+ * (NaN is not). */
+static int mean_in_range(const se23_gauss_t *g)
 {
-    const int m = y->m;
-    for (int i = 0; i < n; ++i) {
-        for (int r = 0; r < m; ++r) {
-            se23_real_t s = SE23_R(0);
-            for (int j = 0; j < n; ++j) {
-                s += P[S * i + j] * y->H[S * r + j];
+    const se23_real_t *parts[4] = {g->T.v.v, g->T.p.v, g->b_g.v, g->b_a.v};
+    for (int k = 0; k < 4; ++k) {
+        for (int i = 0; i < 3; ++i) {
+            if (!(se23_fabs(parts[k][i]) <= MEAN_MAX)) {
+                return 0;
             }
-            PHt[M * i + r] = s;
         }
     }
-    for (int r = 0; r < m; ++r) {
-        for (int q = r; q < m; ++q) {
-            se23_real_t s = y->R[M * r + q];
-            for (int j = 0; j < n; ++j) {
-                s += y->H[S * r + j] * PHt[M * j + q];
-            }
-            Sm[M * r + q] = s;
-            Sm[M * q + r] = s;
-        }
-    }
+    return 1;
 }
 
-/* K = P H^T S^-1 row by row, in place over PHt (S symmetric, factor L),
- * and dx = K z. */
-static void gain(se23_real_t *K, const se23_real_t *L, const se23_meas_t *y,
-                 int n, se23_real_t *dx)
+/* out mean = g mean corrected by dx: T exp(dx_xi), R re-orthonormalised,
+ * biases + dx_db (n = 15), n. Cannot fail for the bounded dx of
+ * se23_kalman_cov and a mean within MEAN_MAX (file comment). out may alias
+ * g. */
+static void retract(const se23_gauss_t *g, const se23_real_t *dx,
+                    se23_gauss_t *out)
 {
-    const int m = y->m;
-    for (int i = 0; i < n; ++i) {
-        se23_cov_chol_solve(L, m, &K[M * i]);
-        dx[i] = SE23_R(0);
-        for (int r = 0; r < m; ++r) {
-            dx[i] += K[M * i + r] * y->z[r];
+    se23_tangent_t xi;
+    se23_pose_t E;
+    for (int i = 0; i < 9; ++i) {
+        xi.v[i] = dx[i];
+    }
+    (void)se23_exp(&xi, &E);
+    se23_compose(&g->T, &E, &out->T);
+    /* Each product leaves R about an epsilon further from SO(3); without
+     * this an R that passed the rotation test could come back outside it
+     * and fail the next call (as in se23_imu_transition). */
+    (void)se23_so3_normalize(&out->T.R, &out->T.R);
+    if (g->n == SE23_GAUSS_N_BIAS) {
+        for (int i = 0; i < 3; ++i) {
+            out->b_g.v[i] = g->b_g.v[i] + dx[SE23_IDX_BG + i];
+            out->b_a.v[i] = g->b_a.v[i] + dx[SE23_IDX_BA + i];
         }
+    } else {
+        out->b_g = g->b_g;
+        out->b_a = g->b_a;
     }
-}
-
-/* z^T S^-1 z. */
-static se23_real_t nis_of(const se23_real_t *L, const se23_meas_t *y)
-{
-    se23_real_t u[M], s = SE23_R(0);
-    for (int r = 0; r < y->m; ++r) {
-        u[r] = y->z[r];
-    }
-    se23_cov_chol_solve(L, y->m, u);
-    for (int r = 0; r < y->m; ++r) {
-        s += u[r] * y->z[r];
-    }
-    return s;
-}
-
-/* Pout = (I - K H) P (I - K H)^T + K R K^T, exactly symmetric; Pout may
- * alias P. */
-static void joseph(const se23_real_t *P, const se23_real_t *K,
-                   const se23_meas_t *y, int n, se23_real_t *Pout)
-{
-    const int m = y->m;
-    const joseph_ctx_t ctx = {K, y->H, n, m};
-    se23_cov_congruence(joseph_map, &ctx, n, P, Pout);
-    for (int i = 0; i < n; ++i) {
-        se23_real_t kr[M]; /* row i of K R */
-        for (int q = 0; q < m; ++q) {
-            se23_real_t s = SE23_R(0);
-            for (int r = 0; r < m; ++r) {
-                s += K[M * i + r] * y->R[M * r + q];
-            }
-            kr[q] = s;
-        }
-        for (int j = i; j < n; ++j) {
-            se23_real_t s = SE23_R(0);
-            for (int q = 0; q < m; ++q) {
-                s += kr[q] * K[M * j + q];
-            }
-            Pout[S * i + j] += s;
-            if (j != i) {
-                Pout[S * j + i] += s;
-            }
-        }
-    }
+    out->n = g->n;
 }
 
 se23_status_t se23_kalman_update(const se23_gauss_t *g, const se23_meas_t *y,
@@ -144,45 +135,32 @@ se23_status_t se23_kalman_update(const se23_gauss_t *g, const se23_meas_t *y,
     SE23_CHECK_NOT_NULL(g);
     SE23_CHECK_NOT_NULL(y);
     SE23_CHECK_NOT_NULL(out);
+    if (g->n != SE23_GAUSS_N_POSE && g->n != SE23_GAUSS_N_BIAS) {
+        return SE23_ERR_DIM;
+    }
+    int blk[NBLK], nb = 0;
+#if SE23_CFG_DEEP_CHECKS
     se23_status_t st = se23_gauss_check(g);
     if (st == SE23_OK) {
-        st = check_meas(y, g->n);
+        st = check_meas(y, g->n, blk, &nb);
     }
+#else
+    se23_status_t st = check_meas(y, g->n, blk, &nb);
+#endif
     if (st != SE23_OK) {
         return st;
     }
-    const int n = g->n;
-    se23_real_t K[S * M], Sm[M * M], L[M * M]; /* K holds P H^T first */
-    se23_real_t dx[S] = {SE23_R(0)};
-    innovation_cov(g->P.m, y, n, K, Sm);
-    if (!se23_cov_chol(Sm, y->m, M, SE23_R(0), L)) {
-        return SE23_ERR_NOT_PSD;
+    if (!mean_in_range(g)) {
+        return SE23_ERR_NONFINITE;
     }
-    gain(K, L, y, n, dx);
-    se23_tangent_t xi;
-    se23_pose_t E, T;
-    for (int i = 0; i < 9; ++i) {
-        xi.v[i] = dx[i];
-    }
-    st = se23_exp(&xi, &E);
+    se23_real_t dx[S], q;
+    st = se23_kalman_cov(g, y, blk, nb, CORR_MAX, dx, &q, out->P.m);
     if (st != SE23_OK) {
         return st;
     }
-    /* Nothing fails from here on. */
-    se23_compose(&g->T, &E, &T);
+    retract(g, dx, out);
     if (nis != NULL) {
-        *nis = nis_of(L, y);
+        *nis = q;
     }
-    joseph(g->P.m, K, y, n, out->P.m);
-    out->b_g = g->b_g;
-    out->b_a = g->b_a;
-    if (n == SE23_GAUSS_N_BIAS) {
-        const se23_vec3_t dg = {{dx[SE23_IDX_BG], dx[SE23_IDX_BG + 1], dx[SE23_IDX_BG + 2]}};
-        const se23_vec3_t da = {{dx[SE23_IDX_BA], dx[SE23_IDX_BA + 1], dx[SE23_IDX_BA + 2]}};
-        se23_v3_axpy(&g->b_g, SE23_R(1), &dg, &out->b_g);
-        se23_v3_axpy(&g->b_a, SE23_R(1), &da, &out->b_a);
-    }
-    out->T = T;
-    out->n = n;
     return SE23_OK;
 }
