@@ -7,7 +7,7 @@
 
 #include "argcheck.h"
 #include "linalg.h"
-#include "kalman_cov.h"
+#include "kalman_parts.h"
 #include "se23/se23.h"
 
 enum { S = SE23_GAUSS_NMAX, M = SE23_MEAS_MMAX };

@@ -1,4 +1,4 @@
-/* The covariance side of the measurement update; see kalman_cov.h.
+/* The two halves of the measurement update; see kalman_parts.h.
  *
  * Cost. Only the active 3-column blocks of H take part (a = 3 x their
  * number). With m rows and n states, in fused multiply-adds:
@@ -32,11 +32,13 @@
  * grows with the gain (small R). P+ is symmetric by construction (upper
  * triangle computed, mirrored); test_kalman runs thousands of updates with
  * tiny R and checks the smallest eigenvalue. */
-#include "kalman_cov.h"
+#include "kalman_parts.h"
 
 #include <float.h>
 
 #include "linalg.h"
+#include "se23/se23.h"
+#include "se23/so3.h"
 #include "se23_math.h"
 
 enum { S = SE23_GAUSS_NMAX, M = SE23_MEAS_MMAX };
@@ -67,7 +69,14 @@ static inline se23_real_t fma_(se23_real_t a, se23_real_t b, se23_real_t c)
     return SE23_LIBM(fma)(a, b, c);
 }
 
-int se23_meas_chol(se23_real_t *L, int m)
+/* In place: L holds the packed lower triangle of a symmetric m x m A on
+ * entry, its lower Cholesky factor on exit, except that the diagonal holds
+ * the reciprocals 1 / L_jj (what the solves need). Refused (returns 0, L
+ * then unspecified) unless every pivot is finite, exceeds 16 eps A_jj (the
+ * rule of cov.h) and is at least the smallest normal number of the
+ * precision (so that 1 / L_jj is finite and accurate); NaN is refused.
+ * m^3/6 multiply-adds, m square roots and divisions. */
+static inline int chol(se23_real_t *L, int m)
 {
     for (int j = 0; j < m; ++j) {
         se23_real_t *lj = &L[se23_tri(j)];
@@ -119,7 +128,7 @@ se23_status_t se23_meas_cov_check(const se23_real_t *A, int m, int stride)
         }
         li[i] = A[stride * i + i] + (tol + TINY);
     }
-    return se23_meas_chol(L, m) ? SE23_OK : SE23_ERR_NOT_PSD;
+    return chol(L, m) ? SE23_OK : SE23_ERR_NOT_PSD;
 }
 
 /* The kernels take the rows of H (the columns of C and U) three at a
@@ -144,18 +153,23 @@ static int padded(int m)
  * (9 multiply-adds per row): n m a in all. The first block starts from
  * zero_row (stride 0) instead of C, so C needs no clearing. */
 static void cross_cov(const se23_real_t *P, const se23_meas_t *y, int n,
-                      const int *blk, int nb, se23_real_t *C)
+                      unsigned mask, se23_real_t *C)
 {
     const int mp = padded(y->m);
     for (int g = 0; g < mp; g += 3) {
         const se23_real_t *h0 = h_row(y, g), *h1 = h_row(y, g + 1), *h2 = h_row(y, g + 2);
-        for (int k = 0; k < nb; ++k) {
-            const int j = 3 * blk[k];
+        int first = 1;
+        for (int b = 0; b < n / 3; ++b) {
+            if ((mask & (1u << b)) == 0u) {
+                continue;
+            }
+            const int j = 3 * b;
             const se23_real_t a00 = h0[j], a01 = h0[j + 1], a02 = h0[j + 2];
             const se23_real_t a10 = h1[j], a11 = h1[j + 1], a12 = h1[j + 2];
             const se23_real_t a20 = h2[j], a21 = h2[j + 1], a22 = h2[j + 2];
-            const se23_real_t *acc = (k == 0) ? zero_row : &C[g];
-            const int acc_stride = (k == 0) ? 0 : M;
+            const se23_real_t *acc = first ? zero_row : &C[g];
+            const int acc_stride = first ? 0 : M;
+            first = 0;
             for (int i = 0; i < n; ++i) {
                 const se23_real_t *p = &P[S * i + j], *c0 = &acc[acc_stride * i];
                 const se23_real_t p0 = p[0], p1 = p[1], p2 = p[2];
@@ -168,7 +182,7 @@ static void cross_cov(const se23_real_t *P, const se23_meas_t *y, int n,
                 c[2] = r2;
             }
         }
-        if (nb == 0) {
+        if (first) {
             for (int i = 0; i < n; ++i) {
                 for (int r = g; r < g + 3; ++r) {
                     C[M * i + r] = SE23_R(0);
@@ -180,7 +194,7 @@ static void cross_cov(const se23_real_t *P, const se23_meas_t *y, int n,
 
 /* Packed lower triangle of S = H C + R, reading the active rows of C and
  * the upper triangle of R: a m(m+1)/2 multiply-adds. */
-static void innovation_cov(const se23_meas_t *y, const int *blk, int nb,
+static void innovation_cov(const se23_meas_t *y, int n, unsigned mask,
                            const se23_real_t *C, se23_real_t *L)
 {
     for (int q = 0; q < y->m; ++q) {
@@ -188,8 +202,11 @@ static void innovation_cov(const se23_meas_t *y, const int *blk, int nb,
         for (int r = 0; r <= q; ++r) {
             const se23_real_t *h = &y->H[S * r];
             se23_real_t s = y->R[M * r + q];
-            for (int k = 0; k < nb; ++k) {
-                const int j = 3 * blk[k];
+            for (int b = 0; b < n / 3; ++b) {
+                if ((mask & (1u << b)) == 0u) {
+                    continue;
+                }
+                const int j = 3 * b;
                 s = fma_(h[j], C[M * j + q], s);
                 s = fma_(h[j + 1], C[M * (j + 1) + q], s);
                 s = fma_(h[j + 2], C[M * (j + 2) + q], s);
@@ -199,7 +216,7 @@ static void innovation_cov(const se23_meas_t *y, const int *blk, int nb,
     }
 }
 
-/* x = L^-1 x for the factor of se23_meas_chol (reciprocal diagonal). */
+/* x = L^-1 x for the factor of chol (reciprocal diagonal). */
 static void forward(const se23_real_t *L, int m, se23_real_t *x)
 {
     for (int r = 0; r < m; ++r) {
@@ -212,7 +229,7 @@ static void forward(const se23_real_t *L, int m, se23_real_t *x)
     }
 }
 
-/* L_rk of the factor of se23_meas_chol (k < r), 1/L_rr for k = r, and 0
+/* L_rk of the factor of chol (k < r), 1/L_rr for k = r, and 0
  * past the m rows (the padding). */
 static se23_real_t l_at(const se23_real_t *L, int m, int r, int k)
 {
@@ -224,19 +241,19 @@ static se23_real_t l_at(const se23_real_t *L, int m, int r, int k)
 static void solve_u_block(const se23_real_t *L, int n, int m, int g, int h,
                           se23_real_t *U)
 {
-    se23_real_t b[3][3];
-    for (int r = 0; r < 3; ++r) {
-        for (int k = 0; k < 3; ++k) {
-            b[r][k] = -l_at(L, m, g + r, h + k);
-        }
-    }
+    const se23_real_t b00 = -l_at(L, m, g, h), b01 = -l_at(L, m, g, h + 1),
+                      b02 = -l_at(L, m, g, h + 2);
+    const se23_real_t b10 = -l_at(L, m, g + 1, h), b11 = -l_at(L, m, g + 1, h + 1),
+                      b12 = -l_at(L, m, g + 1, h + 2);
+    const se23_real_t b20 = -l_at(L, m, g + 2, h), b21 = -l_at(L, m, g + 2, h + 1),
+                      b22 = -l_at(L, m, g + 2, h + 2);
     for (int i = 0; i < n; ++i) {
         const se23_real_t *u = &U[M * i + h];
         se23_real_t *c = &U[M * i + g];
         const se23_real_t u0 = u[0], u1 = u[1], u2 = u[2];
-        const se23_real_t c0 = fma_(b[0][2], u2, fma_(b[0][1], u1, fma_(b[0][0], u0, c[0])));
-        const se23_real_t c1 = fma_(b[1][2], u2, fma_(b[1][1], u1, fma_(b[1][0], u0, c[1])));
-        const se23_real_t c2 = fma_(b[2][2], u2, fma_(b[2][1], u1, fma_(b[2][0], u0, c[2])));
+        const se23_real_t c0 = fma_(b02, u2, fma_(b01, u1, fma_(b00, u0, c[0])));
+        const se23_real_t c1 = fma_(b12, u2, fma_(b11, u1, fma_(b10, u0, c[1])));
+        const se23_real_t c2 = fma_(b22, u2, fma_(b21, u1, fma_(b20, u0, c[2])));
         c[0] = c0;
         c[1] = c1;
         c[2] = c2;
@@ -321,12 +338,12 @@ static void downdate(const se23_real_t *P, const se23_real_t *U, int n, int m,
     }
 }
 
-/* Nonzero if every |dx_i| <= corr_max and P_ii <= DIAG_MAX (NaN fails). */
-static int in_range(const se23_real_t *P, const se23_real_t *dx, int n,
-                    se23_real_t corr_max)
+/* Nonzero if every |dx_i| <= SE23_KALMAN_CORR_MAX and P_ii <= DIAG_MAX
+ * (NaN fails). */
+static int in_range(const se23_real_t *P, const se23_real_t *dx, int n)
 {
     for (int i = 0; i < n; ++i) {
-        if (!(se23_fabs(dx[i]) <= corr_max) || !(P[S * i + i] <= DIAG_MAX)) {
+        if (!(se23_fabs(dx[i]) <= SE23_KALMAN_CORR_MAX) || !(P[S * i + i] <= DIAG_MAX)) {
             return 0;
         }
     }
@@ -334,15 +351,14 @@ static int in_range(const se23_real_t *P, const se23_real_t *dx, int n,
 }
 
 se23_status_t se23_kalman_cov(const se23_gauss_t *g, const se23_meas_t *y,
-                              const int *blk, int nb, se23_real_t corr_max,
-                              se23_real_t *dx, se23_real_t *nis,
+                              unsigned mask, se23_real_t *dx, se23_real_t *nis,
                               se23_real_t *Pout)
 {
     const int n = g->n, m = y->m;
     se23_real_t U[S * M], L[SE23_MEAS_TRI], w[M];
-    cross_cov(g->P.m, y, n, blk, nb, U);
-    innovation_cov(y, blk, nb, U, L);
-    if (!se23_meas_chol(L, m)) {
+    cross_cov(g->P.m, y, n, mask, U);
+    innovation_cov(y, n, mask, U, L);
+    if (!chol(L, m)) {
         return SE23_ERR_NOT_PSD;
     }
     for (int r = 0; r < M; ++r) {
@@ -354,11 +370,37 @@ se23_status_t se23_kalman_cov(const se23_gauss_t *g, const se23_meas_t *y,
         q = fma_(w[r], w[r], q);
     }
     solve_u(L, w, n, m, U, dx, &qmax);
-    if (!se23_is_finite(q) || !(qmax <= DIAG_MAX) || !in_range(g->P.m, dx, n, corr_max)) {
+    if (!se23_is_finite(q) || !(qmax <= DIAG_MAX) || !in_range(g->P.m, dx, n)) {
         return SE23_ERR_NONFINITE;
     }
     /* Nothing fails from here on. */
     downdate(g->P.m, U, n, m, Pout);
     *nis = q;
     return SE23_OK;
+}
+
+void se23_kalman_retract(const se23_gauss_t *g, const se23_real_t *dx,
+                         se23_gauss_t *out)
+{
+    se23_tangent_t xi;
+    se23_pose_t E;
+    for (int i = 0; i < 9; ++i) {
+        xi.v[i] = dx[i];
+    }
+    (void)se23_exp(&xi, &E);
+    se23_compose(&g->T, &E, &out->T);
+    /* Each product leaves R about an epsilon further from SO(3); without
+     * this an R that passed the rotation test could come back outside it
+     * and fail the next call (as in se23_imu_transition). */
+    (void)se23_so3_normalize(&out->T.R, &out->T.R);
+    if (g->n == SE23_GAUSS_N_BIAS) {
+        for (int i = 0; i < 3; ++i) {
+            out->b_g.v[i] = g->b_g.v[i] + dx[SE23_IDX_BG + i];
+            out->b_a.v[i] = g->b_a.v[i] + dx[SE23_IDX_BA + i];
+        }
+    } else {
+        out->b_g = g->b_g;
+        out->b_a = g->b_a;
+    }
+    out->n = g->n;
 }
