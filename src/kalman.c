@@ -43,7 +43,7 @@ static int scan_h(const se23_meas_t *y, int n, unsigned *mask)
             bad += h[0] * SE23_R(0) + h[1] * SE23_R(0) + h[2] * SE23_R(0);
         }
         if (mag > SE23_R(0)) {
-            found |= 1u << b;
+            found |= 1u << (unsigned)b;
         }
     }
     *mask = found;

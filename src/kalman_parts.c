@@ -160,15 +160,15 @@ static void cross_cov(const se23_real_t *P, const se23_meas_t *y, int n,
         const se23_real_t *h0 = h_row(y, g), *h1 = h_row(y, g + 1), *h2 = h_row(y, g + 2);
         int first = 1;
         for (int b = 0; b < n / 3; ++b) {
-            if ((mask & (1u << b)) == 0u) {
+            if ((mask & (1u << (unsigned)b)) == 0u) {
                 continue;
             }
             const int j = 3 * b;
             const se23_real_t a00 = h0[j], a01 = h0[j + 1], a02 = h0[j + 2];
             const se23_real_t a10 = h1[j], a11 = h1[j + 1], a12 = h1[j + 2];
             const se23_real_t a20 = h2[j], a21 = h2[j + 1], a22 = h2[j + 2];
-            const se23_real_t *acc = first ? zero_row : &C[g];
-            const int acc_stride = first ? 0 : M;
+            const se23_real_t *acc = (first != 0) ? zero_row : &C[g];
+            const int acc_stride = (first != 0) ? 0 : M;
             first = 0;
             for (int i = 0; i < n; ++i) {
                 const se23_real_t *p = &P[S * i + j], *c0 = &acc[acc_stride * i];
@@ -182,7 +182,7 @@ static void cross_cov(const se23_real_t *P, const se23_meas_t *y, int n,
                 c[2] = r2;
             }
         }
-        if (first) {
+        if (first != 0) {
             for (int i = 0; i < n; ++i) {
                 for (int r = g; r < g + 3; ++r) {
                     C[M * i + r] = SE23_R(0);
@@ -203,11 +203,13 @@ static void innovation_cov(const se23_meas_t *y, int n, unsigned mask,
             const se23_real_t *h = &y->H[S * r];
             se23_real_t s = y->R[M * r + q];
             for (int b = 0; b < n / 3; ++b) {
-                if ((mask & (1u << b)) == 0u) {
+                if ((mask & (1u << (unsigned)b)) == 0u) {
                     continue;
                 }
                 const int j = 3 * b;
-                s = fma_(h[j], C[M * j + q], s);
+                /* C's rows 0..n-1, columns 0..padded(m)-1 are all written
+                 * by cross_cov; the analyzer cannot follow the mask. */
+                s = fma_(h[j], C[M * j + q], s); // NOLINT(clang-analyzer-core.CallAndMessage)
                 s = fma_(h[j + 1], C[M * (j + 1) + q], s);
                 s = fma_(h[j + 2], C[M * (j + 2) + q], s);
             }
@@ -277,7 +279,6 @@ static void solve_u(const se23_real_t *L, const se23_real_t *w, int n, int m,
         const se23_real_t l10 = -l_at(L, m, g + 1, g), l20 = -l_at(L, m, g + 2, g),
                           l21 = -l_at(L, m, g + 2, g + 1);
         const se23_real_t w0 = w[g], w1 = w[g + 1], w2 = w[g + 2];
-        const int last = (g + 3 >= m);
         for (int i = 0; i < n; ++i) {
             se23_real_t *c = &U[M * i + g];
             const se23_real_t u0 = c[0] * d0;
@@ -288,7 +289,7 @@ static void solve_u(const se23_real_t *L, const se23_real_t *w, int n, int m,
             c[2] = u2;
             const se23_real_t d = (g == 0) ? SE23_R(0) : dx[i];
             dx[i] = fma_(u2, w2, fma_(u1, w1, fma_(u0, w0, d)));
-            if (last) {
+            if (g + 3 >= m) { /* the last group: |u_i|^2 is complete */
                 const se23_real_t *ui = &U[M * i];
                 se23_real_t q = SE23_R(0);
                 for (int r = 0; r < g + 3; ++r) {

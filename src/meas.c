@@ -10,7 +10,7 @@
 #include "kalman_parts.h"
 #include "se23/se23.h"
 
-enum { S = SE23_GAUSS_NMAX, M = SE23_MEAS_MMAX };
+enum { S = SE23_GAUSS_NMAX, M = SE23_MEAS_MMAX, BG = SE23_IDX_BG };
 
 /* Shared checks: T a valid pose, the measured vectors finite, cov valid. */
 static se23_status_t check_inputs(const se23_pose_t *T, const se23_vec3_t *a,
@@ -66,9 +66,9 @@ static void put3(const se23_vec3_t *meas, const se23_vec3_t *pred,
     /* The zeros, as contiguous runs: bias columns of rows 0 and 1, then
      * row 2's bias columns through the end of H; likewise for R. */
     zero(&y->z[3], M - 3);
-    zero(&y->H[SE23_IDX_BG], S - SE23_IDX_BG);
-    zero(&y->H[S + SE23_IDX_BG], S - SE23_IDX_BG);
-    zero(&y->H[2 * S + SE23_IDX_BG], S * M - (2 * S + SE23_IDX_BG));
+    zero(&y->H[BG], S - BG);
+    zero(&y->H[S + BG], S - BG);
+    zero(&y->H[2 * S + BG], S * M - (2 * S + BG));
     zero(&y->R[3], M - 3);
     zero(&y->R[M + 3], M - 3);
     zero(&y->R[2 * M + 3], M * M - (2 * M + 3));
