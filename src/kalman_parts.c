@@ -153,23 +153,18 @@ static int padded(int m)
  * (9 multiply-adds per row): n m a in all. The first block starts from
  * zero_row (stride 0) instead of C, so C needs no clearing. */
 static void cross_cov(const se23_real_t *P, const se23_meas_t *y, int n,
-                      unsigned mask, se23_real_t *C)
+                      const int *blk, int nb, se23_real_t *C)
 {
     const int mp = padded(y->m);
     for (int g = 0; g < mp; g += 3) {
         const se23_real_t *h0 = h_row(y, g), *h1 = h_row(y, g + 1), *h2 = h_row(y, g + 2);
-        int first = 1;
-        for (int b = 0; b < n / 3; ++b) {
-            if ((mask & (1u << (unsigned)b)) == 0u) {
-                continue;
-            }
-            const int j = 3 * b;
+        for (int k = 0; k < nb; ++k) {
+            const int j = 3 * blk[k];
             const se23_real_t a00 = h0[j], a01 = h0[j + 1], a02 = h0[j + 2];
             const se23_real_t a10 = h1[j], a11 = h1[j + 1], a12 = h1[j + 2];
             const se23_real_t a20 = h2[j], a21 = h2[j + 1], a22 = h2[j + 2];
-            const se23_real_t *acc = (first != 0) ? zero_row : &C[g];
-            const int acc_stride = (first != 0) ? 0 : M;
-            first = 0;
+            const se23_real_t *acc = (k == 0) ? zero_row : &C[g];
+            const int acc_stride = (k == 0) ? 0 : M;
             for (int i = 0; i < n; ++i) {
                 const se23_real_t *p = &P[S * i + j], *c0 = &acc[acc_stride * i];
                 const se23_real_t p0 = p[0], p1 = p[1], p2 = p[2];
@@ -182,7 +177,7 @@ static void cross_cov(const se23_real_t *P, const se23_meas_t *y, int n,
                 c[2] = r2;
             }
         }
-        if (first != 0) {
+        if (nb == 0) {
             for (int i = 0; i < n; ++i) {
                 for (int r = g; r < g + 3; ++r) {
                     C[M * i + r] = SE23_R(0);
@@ -194,7 +189,7 @@ static void cross_cov(const se23_real_t *P, const se23_meas_t *y, int n,
 
 /* Packed lower triangle of S = H C + R, reading the active rows of C and
  * the upper triangle of R: a m(m+1)/2 multiply-adds. */
-static void innovation_cov(const se23_meas_t *y, int n, unsigned mask,
+static void innovation_cov(const se23_meas_t *y, const int *blk, int nb,
                            const se23_real_t *C, se23_real_t *L)
 {
     for (int q = 0; q < y->m; ++q) {
@@ -202,13 +197,10 @@ static void innovation_cov(const se23_meas_t *y, int n, unsigned mask,
         for (int r = 0; r <= q; ++r) {
             const se23_real_t *h = &y->H[S * r];
             se23_real_t s = y->R[M * r + q];
-            for (int b = 0; b < n / 3; ++b) {
-                if ((mask & (1u << (unsigned)b)) == 0u) {
-                    continue;
-                }
-                const int j = 3 * b;
+            for (int k = 0; k < nb; ++k) {
+                const int j = 3 * blk[k];
                 /* C's rows 0..n-1, columns 0..padded(m)-1 are all written
-                 * by cross_cov; the analyzer cannot follow the mask. */
+                 * by cross_cov; the analyzer cannot follow the blocks. */
                 s = fma_(h[j], C[M * j + q], s); // NOLINT(clang-analyzer-core.CallAndMessage)
                 s = fma_(h[j + 1], C[M * (j + 1) + q], s);
                 s = fma_(h[j + 2], C[M * (j + 2) + q], s);
@@ -264,8 +256,9 @@ static void solve_u_block(const se23_real_t *L, int n, int m, int g, int h,
 
 /* In place over C: U = C L^-T (row i solves L u_i = c_i), three columns
  * at a time: the earlier columns' part, then the 3x3 triangle; padding
- * columns stay 0. Along the way dx = U w and the largest |U_i|^2 (qmax;
- * NaN stays NaN). n m(m+1)/2 + 2 n m multiply-adds, n m multiplies. */
+ * columns stay 0. Along the way dx = U w and the largest |u|^2 over rows
+ * and groups of three columns (qmax; NaN stays NaN), so |U_i|^2 <= 3 qmax.
+ * n m(m+1)/2 + 2 n m multiply-adds, n m multiplies. */
 static void solve_u(const se23_real_t *L, const se23_real_t *w, int n, int m,
                     se23_real_t *U, se23_real_t *dx, se23_real_t *qmax)
 {
@@ -289,14 +282,8 @@ static void solve_u(const se23_real_t *L, const se23_real_t *w, int n, int m,
             c[2] = u2;
             const se23_real_t d = (g == 0) ? SE23_R(0) : dx[i];
             dx[i] = fma_(u2, w2, fma_(u1, w1, fma_(u0, w0, d)));
-            if (g + 3 >= m) { /* the last group: |u_i|^2 is complete */
-                const se23_real_t *ui = &U[M * i];
-                se23_real_t q = SE23_R(0);
-                for (int r = 0; r < g + 3; ++r) {
-                    q = fma_(ui[r], ui[r], q);
-                }
-                worst = (q > worst || !se23_is_finite(q)) ? q : worst;
-            }
+            const se23_real_t q = fma_(u2, u2, fma_(u1, u1, u0 * u0));
+            worst = (q > worst || !se23_is_finite(q)) ? q : worst;
         }
     }
     *qmax = worst;
@@ -305,36 +292,54 @@ static void solve_u(const se23_real_t *L, const se23_real_t *w, int n, int m,
 /* Entry (i, j) and its mirror of src - U U^T for columns g..g+2 of U,
  * with (a0, a1, a2) = -(row i of U). */
 static inline void down_entry(const se23_real_t *src, const se23_real_t *U,
-                              int i, int j, int g, se23_real_t a0, se23_real_t a1,
-                              se23_real_t a2, se23_real_t *Pout)
+                              int i, int j, int g, const se23_real_t a[3],
+                              se23_real_t *Pout)
 {
     const se23_real_t *u = &U[M * j + g];
-    const se23_real_t s = fma_(a2, u[2], fma_(a1, u[1], fma_(a0, u[0], src[S * i + j])));
+    const se23_real_t s = fma_(a[2], u[2], fma_(a[1], u[1], fma_(a[0], u[0], src[S * i + j])));
     Pout[S * i + j] = s;
     Pout[S * j + i] = s;
 }
 
+/* Rows i and i + 1 of src - U U^T (columns g..g+2 of U), j >= i: the two
+ * rows share each load of u_j. */
+static void down_rows2(const se23_real_t *src, const se23_real_t *U, int i,
+                       int n, int g, se23_real_t *Pout)
+{
+    const se23_real_t a[3] = {-U[M * i + g], -U[M * i + g + 1], -U[M * i + g + 2]};
+    const se23_real_t b0 = -U[M * (i + 1) + g], b1 = -U[M * (i + 1) + g + 1],
+                      b2 = -U[M * (i + 1) + g + 2];
+    down_entry(src, U, i, i, g, a, Pout);
+    for (int j = i + 1; j < n; ++j) {
+        const se23_real_t *u = &U[M * j + g];
+        const se23_real_t u0 = u[0], u1 = u[1], u2 = u[2];
+        const se23_real_t s = fma_(a[2], u2, fma_(a[1], u1, fma_(a[0], u0, src[S * i + j])));
+        const se23_real_t t = fma_(b2, u2, fma_(b1, u1, fma_(b0, u0, src[S * (i + 1) + j])));
+        Pout[S * i + j] = s;
+        Pout[S * j + i] = s;
+        Pout[S * (i + 1) + j] = t;
+        Pout[S * j + i + 1] = t;
+    }
+}
+
 /* Pout = P - U U^T, three columns of U at a time (zero padding), upper
- * triangle computed and mirrored, two entries per step: m n(n+1)/2
- * multiply-adds (padded m). Row i reads only (i, j), j >= i, and writes
- * (i, j) and (j, i), so Pout may alias P; the groups after the first read
- * Pout's upper triangle. */
+ * triangle computed and mirrored, two rows per pass: m n(n+1)/2
+ * multiply-adds (padded m). Rows i, i + 1 read only (i, j) and (i + 1, j),
+ * j >= i + 1 (and (i, i)), and write those and their mirrors, which lie
+ * left of every column a later row reads: Pout may alias P. The groups
+ * after the first read Pout's upper triangle. */
 static void downdate(const se23_real_t *P, const se23_real_t *U, int n, int m,
                      se23_real_t *Pout)
 {
     for (int g = 0; g < padded(m); g += 3) {
         const se23_real_t *src = (g == 0) ? P : Pout;
-        for (int i = 0; i < n; ++i) {
-            const se23_real_t a0 = -U[M * i + g], a1 = -U[M * i + g + 1],
-                              a2 = -U[M * i + g + 2];
-            int j = i;
-            for (; j + 1 < n; j += 2) {
-                down_entry(src, U, i, j, g, a0, a1, a2, Pout);
-                down_entry(src, U, i, j + 1, g, a0, a1, a2, Pout);
-            }
-            if (j < n) {
-                down_entry(src, U, i, j, g, a0, a1, a2, Pout);
-            }
+        int i = 0;
+        for (; i + 1 < n; i += 2) {
+            down_rows2(src, U, i, n, g, Pout);
+        }
+        if (i < n) {
+            const se23_real_t a[3] = {-U[M * i + g], -U[M * i + g + 1], -U[M * i + g + 2]};
+            down_entry(src, U, i, i, g, a, Pout);
         }
     }
 }
@@ -357,8 +362,15 @@ se23_status_t se23_kalman_cov(const se23_gauss_t *g, const se23_meas_t *y,
 {
     const int n = g->n, m = y->m;
     se23_real_t U[S * M], L[SE23_MEAS_TRI], w[M];
-    cross_cov(g->P.m, y, n, mask, U);
-    innovation_cov(y, n, mask, U, L);
+    int blk[SE23_GAUSS_NMAX / 3], nb = 0;
+    for (int b = 0; b < n / 3; ++b) {
+        if ((mask & (1u << (unsigned)b)) != 0u) {
+            blk[nb] = b;
+            ++nb;
+        }
+    }
+    cross_cov(g->P.m, y, n, blk, nb, U);
+    innovation_cov(y, blk, nb, U, L);
     if (!chol(L, m)) {
         return SE23_ERR_NOT_PSD;
     }
@@ -371,7 +383,7 @@ se23_status_t se23_kalman_cov(const se23_gauss_t *g, const se23_meas_t *y,
         q = fma_(w[r], w[r], q);
     }
     solve_u(L, w, n, m, U, dx, &qmax);
-    if (!se23_is_finite(q) || !(qmax <= DIAG_MAX) || !in_range(g->P.m, dx, n)) {
+    if (!se23_is_finite(q) || !(qmax <= DIAG_MAX / SE23_R(3)) || !in_range(g->P.m, dx, n)) {
         return SE23_ERR_NONFINITE;
     }
     /* Nothing fails from here on. */
