@@ -78,8 +78,8 @@ static inline se23_real_t fma_(se23_real_t a, se23_real_t b, se23_real_t c)
  * m^3/6 multiply-adds, m square roots and divisions. */
 static inline int chol(se23_real_t *L, int m)
 {
+    se23_real_t *lj = L; /* row j; row j + 1 starts j + 1 entries later */
     for (int j = 0; j < m; ++j) {
-        se23_real_t *lj = &L[se23_tri(j)];
         se23_real_t d = lj[j];
         const se23_real_t pmin = PIVOT_EPS * d;
         for (int k = 0; k < j; ++k) {
@@ -90,14 +90,16 @@ static inline int chol(se23_real_t *L, int m)
         }
         const se23_real_t inv = SE23_R(1) / se23_sqrt(d);
         lj[j] = inv;
+        se23_real_t *li = &lj[j + 1];
         for (int i = j + 1; i < m; ++i) {
-            se23_real_t *li = &L[se23_tri(i)];
             se23_real_t s = li[j];
             for (int k = 0; k < j; ++k) {
                 s = fma_(-li[k], lj[k], s);
             }
             li[j] = s * inv;
+            li = &li[i + 1];
         }
+        lj = &lj[j + 1];
     }
     return 1;
 }
@@ -107,26 +109,29 @@ se23_status_t se23_meas_cov_check(const se23_real_t *A, int m, int stride)
     /* Finite: x * 0 is 0 for finite x and NaN for NaN or Inf. */
     se23_real_t bad = SE23_R(0), s = SE23_R(0);
     for (int i = 0; i < m; ++i) {
+        const se23_real_t *a = &A[stride * i];
         for (int j = 0; j < m; ++j) {
-            bad = fma_(A[stride * i + j], SE23_R(0), bad);
+            bad = fma_(a[j], SE23_R(0), bad);
         }
-        const se23_real_t d = se23_fabs(A[stride * i + i]);
+        const se23_real_t d = se23_fabs(a[i]);
         s = (d > s) ? d : s;
     }
     if (!se23_is_finite(bad)) {
         return SE23_ERR_NONFINITE;
     }
-    const se23_real_t tol = SE23_R(SE23_CFG_COV_TOL) * s;
+    const se23_real_t tol = SE23_R(SE23_CFG_COV_TOL) * s, shift = tol + TINY;
     se23_real_t L[SE23_MEAS_TRI];
+    se23_real_t *li = L;
     for (int i = 0; i < m; ++i) {
-        se23_real_t *li = &L[se23_tri(i)];
+        const se23_real_t *a = &A[stride * i];
         for (int j = 0; j < i; ++j) {
-            if (se23_fabs(A[stride * i + j] - A[stride * j + i]) > tol) {
+            if (se23_fabs(a[j] - A[stride * j + i]) > tol) {
                 return SE23_ERR_NOT_SYMMETRIC;
             }
-            li[j] = A[stride * i + j];
+            li[j] = a[j];
         }
-        li[i] = A[stride * i + i] + (tol + TINY);
+        li[i] = a[i] + shift;
+        li = &li[i + 1];
     }
     return chol(L, m) ? SE23_OK : SE23_ERR_NOT_PSD;
 }
@@ -301,45 +306,47 @@ static inline void down_entry(const se23_real_t *src, const se23_real_t *U,
     Pout[S * j + i] = s;
 }
 
-/* Rows i and i + 1 of src - U U^T (columns g..g+2 of U), j >= i: the two
- * rows share each load of u_j. */
-static void down_rows2(const se23_real_t *src, const se23_real_t *U, int i,
+/* Rows i, i + 1, i + 2 of src - U U^T (columns g..g+2 of U), j >= i: the
+ * three rows share each load of u_j (9 multiply-adds per 3 loads). */
+static void down_rows3(const se23_real_t *src, const se23_real_t *U, int i,
                        int n, int g, se23_real_t *Pout)
 {
     const se23_real_t a[3] = {-U[M * i + g], -U[M * i + g + 1], -U[M * i + g + 2]};
-    const se23_real_t b0 = -U[M * (i + 1) + g], b1 = -U[M * (i + 1) + g + 1],
-                      b2 = -U[M * (i + 1) + g + 2];
+    const se23_real_t b[3] = {-U[M * (i + 1) + g], -U[M * (i + 1) + g + 1],
+                              -U[M * (i + 1) + g + 2]};
+    const se23_real_t c0 = -U[M * (i + 2) + g], c1 = -U[M * (i + 2) + g + 1],
+                      c2 = -U[M * (i + 2) + g + 2];
     down_entry(src, U, i, i, g, a, Pout);
-    for (int j = i + 1; j < n; ++j) {
+    down_entry(src, U, i, i + 1, g, a, Pout);
+    down_entry(src, U, i + 1, i + 1, g, b, Pout);
+    for (int j = i + 2; j < n; ++j) {
         const se23_real_t *u = &U[M * j + g];
         const se23_real_t u0 = u[0], u1 = u[1], u2 = u[2];
         const se23_real_t s = fma_(a[2], u2, fma_(a[1], u1, fma_(a[0], u0, src[S * i + j])));
-        const se23_real_t t = fma_(b2, u2, fma_(b1, u1, fma_(b0, u0, src[S * (i + 1) + j])));
+        const se23_real_t t = fma_(b[2], u2, fma_(b[1], u1, fma_(b[0], u0, src[S * (i + 1) + j])));
+        const se23_real_t v = fma_(c2, u2, fma_(c1, u1, fma_(c0, u0, src[S * (i + 2) + j])));
         Pout[S * i + j] = s;
         Pout[S * j + i] = s;
         Pout[S * (i + 1) + j] = t;
         Pout[S * j + i + 1] = t;
+        Pout[S * (i + 2) + j] = v;
+        Pout[S * j + i + 2] = v;
     }
 }
 
 /* Pout = P - U U^T, three columns of U at a time (zero padding), upper
- * triangle computed and mirrored, two rows per pass: m n(n+1)/2
- * multiply-adds (padded m). Rows i, i + 1 read only (i, j) and (i + 1, j),
- * j >= i + 1 (and (i, i)), and write those and their mirrors, which lie
- * left of every column a later row reads: Pout may alias P. The groups
- * after the first read Pout's upper triangle. */
+ * triangle computed and mirrored, three rows per pass (n = 9 or 15):
+ * m n(n+1)/2 multiply-adds (padded m). Rows i..i+2 read only their
+ * entries (r, j), j >= r, and write those and their mirrors, which lie left
+ * of every column a later row reads: Pout may alias P. The groups after
+ * the first read Pout's upper triangle. */
 static void downdate(const se23_real_t *P, const se23_real_t *U, int n, int m,
                      se23_real_t *Pout)
 {
     for (int g = 0; g < padded(m); g += 3) {
         const se23_real_t *src = (g == 0) ? P : Pout;
-        int i = 0;
-        for (; i + 1 < n; i += 2) {
-            down_rows2(src, U, i, n, g, Pout);
-        }
-        if (i < n) {
-            const se23_real_t a[3] = {-U[M * i + g], -U[M * i + g + 1], -U[M * i + g + 2]};
-            down_entry(src, U, i, i, g, a, Pout);
+        for (int i = 0; i < n; i += 3) {
+            down_rows3(src, U, i, n, g, Pout);
         }
     }
 }
