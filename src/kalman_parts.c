@@ -62,11 +62,9 @@ enum { S = SE23_GAUSS_NMAX, M = SE23_MEAS_MMAX };
  * |U_i . U_j| <= max(|U_i|^2, |U_j|^2), partial sums included. */
 #define DIAG_MAX (SE23_R(REAL_MAX) / SE23_R(4))
 
-/* a b + c with one rounding: one instruction on the M4F and M7 FPUs (the
- * library's ISO C build never contracts a * b + c by itself). */
 static inline se23_real_t fma_(se23_real_t a, se23_real_t b, se23_real_t c)
 {
-    return SE23_LIBM(fma)(a, b, c);
+    return se23_kalman_fma(a, b, c);
 }
 
 /* In place: L holds the packed lower triangle of a symmetric m x m A on

@@ -23,6 +23,7 @@
 
 #include "se23/kalman.h"
 #include "se23/types.h"
+#include "se23_math.h"
 
 /** Reals of a packed lower triangle of SE23_MEAS_MMAX rows. */
 #define SE23_MEAS_TRI (SE23_MEAS_MMAX * (SE23_MEAS_MMAX + 1) / 2)
@@ -39,6 +40,29 @@
 #define SE23_KALMAN_CORR_MAX SE23_R(1e18)
 #define SE23_KALMAN_MEAN_MAX (SE23_R(FLT_MAX) / SE23_R(4))
 #endif
+
+/* Fused multiply-add where the FPU has it (M4F single, M7 double: one
+ * instruction; the library's ISO C build never contracts a * b + c by
+ * itself), a * b + c elsewhere (x86-64 without -mfma would call libm). */
+#if SE23_CFG_DOUBLE
+#if defined(FP_FAST_FMA) || defined(__FP_FAST_FMA)
+#define SE23_KALMAN_FAST_FMA 1
+#endif
+#else
+#if defined(FP_FAST_FMAF) || defined(__FP_FAST_FMAF)
+#define SE23_KALMAN_FAST_FMA 1
+#endif
+#endif
+
+/** a b + c, with one rounding where the FPU fuses it. */
+static inline se23_real_t se23_kalman_fma(se23_real_t a, se23_real_t b, se23_real_t c)
+{
+#ifdef SE23_KALMAN_FAST_FMA
+    return SE23_LIBM(fma)(a, b, c);
+#else
+    return a * b + c;
+#endif
+}
 
 /** Offset of row i of a packed lower triangle, 0 <= i < SE23_MEAS_MMAX. */
 static inline int se23_tri(int i)
