@@ -1,141 +1,85 @@
-/* Kalman update in exponential coordinates; see kalman.h. */
+/* Kalman update in exponential coordinates; see kalman.h.
+ *
+ * Structure. Only the 3-column blocks of H (phi, nu, rho, b_g, b_a) that
+ * hold a nonzero in the m rows take part: a runtime scan of H (fused with
+ * its finiteness check, 4 m n operations) keeps se23_meas_t dense and
+ * general. The covariance work (C = P H^T, S, its Cholesky factor, the
+ * gain and P+ = P - U U^T, with the operation count and the argument for
+ * that form) and the retraction are in kalman_parts.c.
+ *
+ * Validation (types.h): the measurement is the caller's and is checked on
+ * every call (m; z and H finite; R symmetric PSD, m x m); the state g is
+ * trusted (n must be 9 or 15; se23_gauss_check only with
+ * SE23_CFG_DEEP_CHECKS).
+ *
+ * Order. Everything that can fail is decided before the first store: the
+ * covariance half stores P+ last, after its checks (its work arrays are
+ * then released); the mean half cannot fail (kalman_parts.h: the
+ * correction is bounded and the mean within range, checked here). So the
+ * retraction, whose sin/cos may take newlib's large-argument reduction,
+ * never shares the stack with the covariance's work arrays. */
 #include "se23/kalman.h"
 
 #include "argcheck.h"
-#include "cov.h"
+#include "kalman_parts.h"
 #include "linalg.h"
-#include "se23/se23.h"
+#include "se23_math.h"
 
 enum { S = SE23_GAUSS_NMAX, M = SE23_MEAS_MMAX };
 
-/* x -> (I - K H) x on R^n; K n x m (stride M), H m x n (stride S). */
-typedef struct {
-    const se23_real_t *K;
-    const se23_real_t *H;
-    int n, m;
-} joseph_ctx_t;
-
-static void joseph_map(const void *ctx, const se23_real_t *x, se23_real_t *y)
+/* Scans the first n columns of H in rows 0..m-1 once: returns 0 if an
+ * entry is not finite (x * 0 is 0 for finite x, NaN for NaN or Inf, and
+ * never overflows), else sets bit b of *mask for each 3-column block b
+ * with a nonzero (a sum of magnitudes is > 0 exactly when one is). */
+static int scan_h(const se23_meas_t *y, int n, unsigned *mask)
 {
-    const joseph_ctx_t *c = (const joseph_ctx_t *)ctx;
-    se23_real_t hx[M];
-    for (int r = 0; r < c->m; ++r) {
-        se23_real_t s = SE23_R(0);
-        for (int j = 0; j < c->n; ++j) {
-            s += c->H[S * r + j] * x[j];
+    se23_real_t bad = SE23_R(0);
+    unsigned found = 0u;
+    for (int b = 0; b < n / 3; ++b) {
+        se23_real_t mag = SE23_R(0);
+        for (int r = 0; r < y->m; ++r) {
+            const se23_real_t *h = &y->H[S * r + 3 * b];
+            mag += se23_fabs(h[0]) + se23_fabs(h[1]) + se23_fabs(h[2]);
+            bad = se23_kalman_fma(h[0], SE23_R(0), bad);
+            bad = se23_kalman_fma(h[1], SE23_R(0), bad);
+            bad = se23_kalman_fma(h[2], SE23_R(0), bad);
         }
-        hx[r] = s;
-    }
-    for (int i = 0; i < c->n; ++i) {
-        se23_real_t s = x[i];
-        for (int r = 0; r < c->m; ++r) {
-            s -= c->K[M * i + r] * hx[r];
+        if (mag > SE23_R(0)) {
+            found |= 1u << (unsigned)b;
         }
-        y[i] = s;
     }
+    *mask = found;
+    return se23_is_finite(bad);
 }
 
-static se23_status_t check_meas(const se23_meas_t *y, int n)
+/* The caller's measurement: 1 <= m <= 9, z and the first n columns of H
+ * finite, R a valid covariance; mask from scan_h. O(m n + m^3). */
+static se23_status_t check_meas(const se23_meas_t *y, int n, unsigned *mask)
 {
     const int m = y->m;
     if (m < 1 || m > M) {
         return SE23_ERR_DIM;
     }
-    if (!se23_all_finite(y->z, m)) {
+    if (!se23_all_finite(y->z, m) || !scan_h(y, n, mask)) {
         return SE23_ERR_NONFINITE;
     }
-    for (int r = 0; r < m; ++r) {
-        if (!se23_all_finite(&y->H[S * r], n)) {
-            return SE23_ERR_NONFINITE;
-        }
-    }
-    return se23_cov_check(y->R, m, M);
+    return se23_meas_cov_check(y->R, m, M);
 }
 
-/* PHt = P H^T (n x m, stride M) and Sm = H PHt + R (m x m, stride M,
- * upper triangle computed and mirrored). */
-static void innovation_cov(const se23_real_t *P, const se23_meas_t *y, int n,
-                           se23_real_t *PHt, se23_real_t *Sm)
+/* Nonzero if every entry of the mean (v, p, biases) is within
+ * SE23_KALMAN_MEAN_MAX
+ * (NaN is not). */
+static int mean_in_range(const se23_gauss_t *g)
 {
-    const int m = y->m;
-    for (int i = 0; i < n; ++i) {
-        for (int r = 0; r < m; ++r) {
-            se23_real_t s = SE23_R(0);
-            for (int j = 0; j < n; ++j) {
-                s += P[S * i + j] * y->H[S * r + j];
-            }
-            PHt[M * i + r] = s;
-        }
-    }
-    for (int r = 0; r < m; ++r) {
-        for (int q = r; q < m; ++q) {
-            se23_real_t s = y->R[M * r + q];
-            for (int j = 0; j < n; ++j) {
-                s += y->H[S * r + j] * PHt[M * j + q];
-            }
-            Sm[M * r + q] = s;
-            Sm[M * q + r] = s;
-        }
-    }
-}
-
-/* K = P H^T S^-1 row by row, in place over PHt (S symmetric, factor L),
- * and dx = K z. */
-static void gain(se23_real_t *K, const se23_real_t *L, const se23_meas_t *y,
-                 int n, se23_real_t *dx)
-{
-    const int m = y->m;
-    for (int i = 0; i < n; ++i) {
-        se23_cov_chol_solve(L, m, &K[M * i]);
-        dx[i] = SE23_R(0);
-        for (int r = 0; r < m; ++r) {
-            dx[i] += K[M * i + r] * y->z[r];
-        }
-    }
-}
-
-/* z^T S^-1 z. */
-static se23_real_t nis_of(const se23_real_t *L, const se23_meas_t *y)
-{
-    se23_real_t u[M], s = SE23_R(0);
-    for (int r = 0; r < y->m; ++r) {
-        u[r] = y->z[r];
-    }
-    se23_cov_chol_solve(L, y->m, u);
-    for (int r = 0; r < y->m; ++r) {
-        s += u[r] * y->z[r];
-    }
-    return s;
-}
-
-/* Pout = (I - K H) P (I - K H)^T + K R K^T, exactly symmetric; Pout may
- * alias P. */
-static void joseph(const se23_real_t *P, const se23_real_t *K,
-                   const se23_meas_t *y, int n, se23_real_t *Pout)
-{
-    const int m = y->m;
-    const joseph_ctx_t ctx = {K, y->H, n, m};
-    se23_cov_congruence(joseph_map, &ctx, n, P, Pout);
-    for (int i = 0; i < n; ++i) {
-        se23_real_t kr[M]; /* row i of K R */
-        for (int q = 0; q < m; ++q) {
-            se23_real_t s = SE23_R(0);
-            for (int r = 0; r < m; ++r) {
-                s += K[M * i + r] * y->R[M * r + q];
-            }
-            kr[q] = s;
-        }
-        for (int j = i; j < n; ++j) {
-            se23_real_t s = SE23_R(0);
-            for (int q = 0; q < m; ++q) {
-                s += kr[q] * K[M * j + q];
-            }
-            Pout[S * i + j] += s;
-            if (j != i) {
-                Pout[S * j + i] += s;
+    const se23_real_t *parts[4] = {g->T.v.v, g->T.p.v, g->b_g.v, g->b_a.v};
+    for (int k = 0; k < 4; ++k) {
+        for (int i = 0; i < 3; ++i) {
+            if (!(se23_fabs(parts[k][i]) <= SE23_KALMAN_MEAN_MAX)) {
+                return 0;
             }
         }
     }
+    return 1;
 }
 
 se23_status_t se23_kalman_update(const se23_gauss_t *g, const se23_meas_t *y,
@@ -144,45 +88,32 @@ se23_status_t se23_kalman_update(const se23_gauss_t *g, const se23_meas_t *y,
     SE23_CHECK_NOT_NULL(g);
     SE23_CHECK_NOT_NULL(y);
     SE23_CHECK_NOT_NULL(out);
+    if (g->n != SE23_GAUSS_N_POSE && g->n != SE23_GAUSS_N_BIAS) {
+        return SE23_ERR_DIM;
+    }
+    unsigned mask = 0u;
+#if SE23_CFG_DEEP_CHECKS
     se23_status_t st = se23_gauss_check(g);
     if (st == SE23_OK) {
-        st = check_meas(y, g->n);
+        st = check_meas(y, g->n, &mask);
     }
+#else
+    se23_status_t st = check_meas(y, g->n, &mask);
+#endif
     if (st != SE23_OK) {
         return st;
     }
-    const int n = g->n;
-    se23_real_t K[S * M], Sm[M * M], L[M * M]; /* K holds P H^T first */
-    se23_real_t dx[S] = {SE23_R(0)};
-    innovation_cov(g->P.m, y, n, K, Sm);
-    if (!se23_cov_chol(Sm, y->m, M, SE23_R(0), L)) {
-        return SE23_ERR_NOT_PSD;
+    if (!mean_in_range(g)) {
+        return SE23_ERR_NONFINITE;
     }
-    gain(K, L, y, n, dx);
-    se23_tangent_t xi;
-    se23_pose_t E, T;
-    for (int i = 0; i < 9; ++i) {
-        xi.v[i] = dx[i];
-    }
-    st = se23_exp(&xi, &E);
+    se23_real_t dx[S], q;
+    st = se23_kalman_cov(g, y, mask, dx, &q, out->P.m);
     if (st != SE23_OK) {
         return st;
     }
-    /* Nothing fails from here on. */
-    se23_compose(&g->T, &E, &T);
+    se23_kalman_retract(g, dx, out);
     if (nis != NULL) {
-        *nis = nis_of(L, y);
+        *nis = q;
     }
-    joseph(g->P.m, K, y, n, out->P.m);
-    out->b_g = g->b_g;
-    out->b_a = g->b_a;
-    if (n == SE23_GAUSS_N_BIAS) {
-        const se23_vec3_t dg = {{dx[SE23_IDX_BG], dx[SE23_IDX_BG + 1], dx[SE23_IDX_BG + 2]}};
-        const se23_vec3_t da = {{dx[SE23_IDX_BA], dx[SE23_IDX_BA + 1], dx[SE23_IDX_BA + 2]}};
-        se23_v3_axpy(&g->b_g, SE23_R(1), &dg, &out->b_g);
-        se23_v3_axpy(&g->b_a, SE23_R(1), &da, &out->b_a);
-    }
-    out->T = T;
-    out->n = n;
     return SE23_OK;
 }

@@ -1,13 +1,16 @@
 /* Ready-made measurement models; see kalman.h. Each writes the residual
- * z = y - h(Tbar) and the rows of H for the right-multiplied error. */
+ * z = y - h(Tbar), the rows of H for the right-multiplied error and R, and
+ * zeros in every entry beyond the m = 3 rows: every element of the output
+ * exactly once (z 9, H 135, R 81 stores), so the output is fully defined
+ * whatever the caller's buffer held. */
 #include "se23/kalman.h"
 
 #include "argcheck.h"
-#include "cov.h"
 #include "linalg.h"
+#include "kalman_parts.h"
 #include "se23/se23.h"
 
-enum { S = SE23_GAUSS_NMAX, M = SE23_MEAS_MMAX };
+enum { S = SE23_GAUSS_NMAX, M = SE23_MEAS_MMAX, BG = SE23_IDX_BG };
 
 /* Shared checks: T a valid pose, the measured vectors finite, cov valid. */
 static se23_status_t check_inputs(const se23_pose_t *T, const se23_vec3_t *a,
@@ -20,40 +23,55 @@ static se23_status_t check_inputs(const se23_pose_t *T, const se23_vec3_t *a,
     if (!se23_all_finite(a->v, 3) || !se23_all_finite(b->v, 3)) {
         return SE23_ERR_NONFINITE;
     }
-    return se23_cov_check(&cov->m[0][0], 3, 3);
+    return se23_meas_cov_check(&cov->m[0][0], 3, 3);
 }
 
-/* y = 3-row measurement with residual meas - pred, zero H, R = cov.
- * Written in place: called only once every check has passed. */
-static void init3(const se23_vec3_t *meas, const se23_vec3_t *pred,
-                  const se23_mat3_t *cov, se23_meas_t *y)
+/* x[0..n-1] = 0 */
+static void zero(se23_real_t *x, int n)
 {
-    y->m = 3;
-    for (int i = 0; i < M; ++i) {
-        y->z[i] = SE23_R(0);
-        for (int j = 0; j < S; ++j) {
-            y->H[S * i + j] = SE23_R(0);
-        }
-        for (int j = 0; j < M; ++j) {
-            y->R[M * i + j] = SE23_R(0);
+    for (int i = 0; i < n; ++i) {
+        x[i] = SE23_R(0);
+    }
+}
+
+/* Rows 0..2, columns col..col+2 of H = A, or 0 if A is NULL. */
+static void put_block(se23_meas_t *y, int col, const se23_mat3_t *A)
+{
+    for (int i = 0; i < 3; ++i) {
+        se23_real_t *h = &y->H[S * i + col];
+        for (int j = 0; j < 3; ++j) {
+            h[j] = (A != NULL) ? A->m[i][j] : SE23_R(0);
         }
     }
+}
+
+/* A 3-row measurement: m, z = meas - pred, R = cov, H = [A, B, C, 0, 0]
+ * (blocks phi, nu, rho, b_g, b_a; NULL for a zero block), and zeros in
+ * every entry beyond the three rows. Written only once every check has
+ * passed; every element once. */
+static void put3(const se23_vec3_t *meas, const se23_vec3_t *pred,
+                 const se23_mat3_t *cov, const se23_mat3_t *A,
+                 const se23_mat3_t *B, const se23_mat3_t *C, se23_meas_t *y)
+{
+    y->m = 3;
+    put_block(y, SE23_IDX_PHI, A);
+    put_block(y, SE23_IDX_NU, B);
+    put_block(y, SE23_IDX_RHO, C);
     for (int i = 0; i < 3; ++i) {
         y->z[i] = meas->v[i] - pred->v[i];
         for (int j = 0; j < 3; ++j) {
             y->R[M * i + j] = cov->m[i][j];
         }
     }
-}
-
-/* Rows 0..2, columns col..col+2 of H = A. */
-static void put_h(se23_meas_t *y, int col, const se23_mat3_t *A)
-{
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-            y->H[S * i + col + j] = A->m[i][j];
-        }
-    }
+    /* The zeros, as contiguous runs: bias columns of rows 0 and 1, then
+     * row 2's bias columns through the end of H; likewise for R. */
+    zero(&y->z[3], M - 3);
+    zero(&y->H[BG], S - BG);
+    zero(&y->H[S + BG], S - BG);
+    zero(&y->H[2 * S + BG], S * M - (2 * S + BG));
+    zero(&y->R[3], M - 3);
+    zero(&y->R[M + 3], M - 3);
+    zero(&y->R[2 * M + 3], M * M - (2 * M + 3));
 }
 
 se23_status_t se23_meas_pos_nav(const se23_pose_t *T, const se23_vec3_t *p_n,
@@ -69,15 +87,19 @@ se23_status_t se23_meas_pos_nav(const se23_pose_t *T, const se23_vec3_t *p_n,
     if (st != SE23_OK) {
         return st;
     }
-    se23_vec3_t h, neg_l;
+    /* h = p + R l; H_phi = -R l^, whose row i is l x (row i of R). */
+    se23_vec3_t h;
     se23_mat3_t A;
-    se23_act(T, lever_b, &h); /* p + R l */
-    se23_v3_scale(lever_b, SE23_R(-1), &neg_l);
-    se23_m3_skew(&neg_l, &A);
-    se23_m3_mul(&T->R, &A, &A); /* -R l^ */
-    init3(p_n, &h, cov, y);
-    put_h(y, SE23_IDX_PHI, &A);
-    put_h(y, SE23_IDX_RHO, &T->R);
+    se23_act(T, lever_b, &h);
+    for (int i = 0; i < 3; ++i) {
+        const se23_vec3_t ri = {{T->R.m[i][0], T->R.m[i][1], T->R.m[i][2]}};
+        se23_vec3_t a;
+        se23_v3_cross(lever_b, &ri, &a);
+        for (int j = 0; j < 3; ++j) {
+            A.m[i][j] = a.v[j];
+        }
+    }
+    put3(p_n, &h, cov, &A, NULL, &T->R, y);
     return SE23_OK;
 }
 
@@ -92,8 +114,7 @@ se23_status_t se23_meas_vel_nav(const se23_pose_t *T, const se23_vec3_t *v_n,
     if (st != SE23_OK) {
         return st;
     }
-    init3(v_n, &T->v, cov, y);
-    put_h(y, SE23_IDX_NU, &T->R);
+    put3(v_n, &T->v, cov, NULL, &T->R, NULL, y);
     return SE23_OK;
 }
 
@@ -108,13 +129,12 @@ se23_status_t se23_meas_vel_body(const se23_pose_t *T, const se23_vec3_t *v_b,
     if (st != SE23_OK) {
         return st;
     }
+    /* h = R^T v; H = [h^, I, 0]. */
     se23_vec3_t h;
     se23_mat3_t A, I;
-    se23_m3_tmul_v3(&T->R, &T->v, &h); /* R^T v */
+    se23_m3_tmul_v3(&T->R, &T->v, &h);
     se23_m3_skew(&h, &A);
     se23_m3_identity(&I);
-    init3(v_b, &h, cov, y);
-    put_h(y, SE23_IDX_PHI, &A);
-    put_h(y, SE23_IDX_NU, &I);
+    put3(v_b, &h, cov, &A, &I, NULL, y);
     return SE23_OK;
 }

@@ -24,6 +24,8 @@ enum { S = SE23_GAUSS_NMAX, M = SE23_MEAS_MMAX };
 #define SENTINEL 0x5a
 #define TOL (256.0 * SE23T_EPS)
 
+static const se23_imu_noise_t KF_NOISE;
+
 static void random_meas(se23t_rng_t *rng, int m, se23_meas_t *y)
 {
     memset(y, 0, sizeof *y);
@@ -242,20 +244,291 @@ static void test_kalman_update_rejects_bad_input_untouched(void **state)
     bad = g;
     bad.n = 10;
     assert_int_equal(se23_kalman_update(&bad, &y, &out, &nis), SE23_ERR_DIM);
+    /* The state is trusted (types.h): its deep check runs only with
+     * SE23_CFG_DEEP_CHECKS. */
+#if SE23_CFG_DEEP_CHECKS
     bad = g;
     bad.T.R.m[0][0] = SE23_R(2);
     assert_int_equal(se23_kalman_update(&bad, &y, &out, &nis), SE23_ERR_NOT_ROTATION);
     bad = g;
     bad.P.m[S * 5 + 12] += SE23_R(1);
     assert_int_equal(se23_kalman_update(&bad, &y, &out, &nis), SE23_ERR_NOT_SYMMETRIC);
+#endif
+    /* A mean that a correction could overflow. */
+    bad = g;
+    bad.T.p.v[1] = (se23_real_t)INFINITY;
+    assert_int_equal(se23_kalman_update(&bad, &y, &out, &nis), SE23_ERR_NONFINITE);
     assert_memory_equal(&out, &out0, sizeof out);
     assert_true(nis == SE23_R(-7));
     /* In place: a failing call leaves the state untouched. */
     bad = g;
-    bad.P.m[0] = (se23_real_t)-INFINITY;
+    yb = y;
+    yb.H[S * 1 + 3] = (se23_real_t)NAN;
     se23_gauss_t copy = bad;
-    assert_int_equal(se23_kalman_update(&bad, &y, &bad, NULL), SE23_ERR_NONFINITE);
+    assert_int_equal(se23_kalman_update(&bad, &yb, &bad, NULL), SE23_ERR_NONFINITE);
     assert_memory_equal(&bad, &copy, sizeof bad);
+    yb = y;
+    memset(yb.R, 0, sizeof yb.R);
+    memset(&bad.P, 0, sizeof bad.P);
+    copy = bad;
+    assert_int_equal(se23_kalman_update(&bad, &yb, &bad, NULL), SE23_ERR_NOT_PSD);
+    assert_memory_equal(&bad, &copy, sizeof bad);
+}
+
+/* D3 (issue 12): SE23_OK means finite outputs. P = 0 with a denormal R
+ * used to give NIS = Inf with SE23_OK; an innovation far beyond sqrt(R)
+ * overflows the NIS; both are refused and nothing is written. */
+static void test_kalman_update_refuses_overflowing_results(void **state)
+{
+    (void)state;
+    se23t_rng_t rng;
+    se23t_rng_seed(&rng, 806);
+    se23_gauss_t g, out, out0;
+    se23_meas_t y;
+    se23_real_t nis = SE23_R(-7);
+    gt_random_gauss(&rng, 15, &g);
+    memset(&out, SENTINEL, sizeof out);
+    out0 = out;
+    memset(&y, 0, sizeof y);
+    y.m = 3;
+    for (int r = 0; r < 3; ++r) {
+        y.z[r] = SE23_R(0.1);
+        y.H[S * r + SE23_IDX_RHO + r] = SE23_R(1);
+    }
+    /* P = 0, R denormal: S = R has a pivot below the smallest normal. */
+    se23_gauss_t g0 = g;
+    memset(&g0.P, 0, sizeof g0.P);
+#if SE23_CFG_DOUBLE
+    const se23_real_t denormal = SE23_R(1e-310);
+#else
+    const se23_real_t denormal = SE23_R(1e-40);
+#endif
+    for (int r = 0; r < 3; ++r) {
+        y.R[M * r + r] = denormal;
+    }
+    assert_true(denormal > SE23_R(0));
+    assert_int_equal(se23_kalman_update(&g0, &y, &out, &nis), SE23_ERR_NOT_PSD);
+    /* R tiny but normal, z huge: the NIS z^T S^-1 z overflows. */
+#if SE23_CFG_DOUBLE
+    const se23_real_t tiny = SE23_R(1e-200), huge = SE23_R(1e200);
+#else
+    const se23_real_t tiny = SE23_R(1e-30), huge = SE23_R(1e30);
+#endif
+    for (int r = 0; r < 3; ++r) {
+        y.R[M * r + r] = tiny;
+        y.z[r] = huge;
+    }
+    assert_int_equal(se23_kalman_update(&g0, &y, &out, &nis), SE23_ERR_NONFINITE);
+    /* With the prior uncertainty, a correction beyond any sane magnitude
+     * (|dx| ~ z) would overflow the retraction: refused too. */
+    assert_int_equal(se23_kalman_update(&g, &y, &out, &nis), SE23_ERR_NONFINITE);
+    assert_memory_equal(&out, &out0, sizeof out);
+    assert_true(nis == SE23_R(-7));
+    /* Both sides of the pivot floor: a small normal R is accepted. */
+    for (int r = 0; r < 3; ++r) {
+        y.R[M * r + r] = tiny;
+        y.z[r] = SE23_R(1e-16) * tiny / huge;
+    }
+    assert_int_equal(se23_kalman_update(&g0, &y, &out, &nis), SE23_OK);
+    assert_true(isfinite((double)nis));
+}
+
+/* D2 (issue 12): the retraction re-orthonormalises R. An R that passes the
+ * rotation test at 0.9 of the tolerance comes back at rounding level, and
+ * the next prediction accepts it. */
+static void test_kalman_update_keeps_rotation_valid(void **state)
+{
+    (void)state;
+    se23t_rng_t rng;
+    se23t_rng_seed(&rng, 807);
+    se23_gauss_t g, out;
+    se23_meas_t y;
+    gt_random_gauss(&rng, 15, &g);
+    /* R diag(1 + d, 1 - d, 1): R^T R - I = diag(2d, -2d, 0) (to d^2),
+     * det = 1 - d^2. */
+    const double d = 0.45 * (double)SE23_CFG_ROT_TOL;
+    for (int i = 0; i < 3; ++i) {
+        g.T.R.m[i][0] = (se23_real_t)((double)g.T.R.m[i][0] * (1.0 + d));
+        g.T.R.m[i][1] = (se23_real_t)((double)g.T.R.m[i][1] * (1.0 - d));
+    }
+    assert_int_equal(se23_so3_check(&g.T.R), SE23_OK);
+    const se23_vec3_t p = {{SE23_R(1), SE23_R(-2), SE23_R(0.5)}}, lever = {{SE23_R(0.3), 0, 0}};
+    const se23_mat3_t cov = {{{SE23_R(0.1), 0, 0}, {0, SE23_R(0.1), 0}, {0, 0, SE23_R(0.1)}}};
+    assert_int_equal(se23_meas_pos_nav(&g.T, &p, &lever, &cov, &y), SE23_OK);
+    assert_int_equal(se23_kalman_update(&g, &y, &out, NULL), SE23_OK);
+    double worst = 0;
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            double s = (i == j) ? -1.0 : 0.0;
+            for (int k = 0; k < 3; ++k) {
+                s += (double)out.T.R.m[k][i] * (double)out.T.R.m[k][j];
+            }
+            worst = fmax(worst, fabs(s));
+        }
+    }
+    assert_true(worst <= 16.0 * SE23T_EPS);
+    assert_int_equal(se23_so3_check(&out.T.R), SE23_OK);
+    se23_earth_model_t model;
+    const se23_vec3_t g_n = {{0, 0, SE23_R(9.81)}}, zero = {{0}};
+    assert_int_equal(se23_earth_model_init(&g_n, &zero, SE23_R(0.01), SE23_R(0.01), &model), SE23_OK);
+    const se23_imu_sample_t s = {{{SE23_R(0.1), 0, 0}}, {{0, 0, SE23_R(-9.81)}}, SE23_R(0.01)};
+    assert_int_equal(se23_gauss_predict(&model, &out, &s, &KF_NOISE, SE23_INPUT_JAC_EXACT, &out),
+                     SE23_OK);
+    assert_int_equal(se23_gauss_check(&out), SE23_OK);
+}
+
+/* Smallest eigenvalue of the leading n x n block of a symmetric A (stride
+ * S), by cyclic Jacobi in double. */
+static double min_eigenvalue(const se23_real_t *A, int n)
+{
+    double a[S][S];
+    for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j) {
+            a[i][j] = (double)A[S * i + j];
+        }
+    }
+    for (int sweep = 0; sweep < 30; ++sweep) {
+        double off = 0;
+        for (int p = 0; p < n; ++p) {
+            for (int q = p + 1; q < n; ++q) {
+                off += a[p][q] * a[p][q];
+            }
+        }
+        if (off < 1e-300) {
+            break;
+        }
+        for (int p = 0; p < n; ++p) {
+            for (int q = p + 1; q < n; ++q) {
+                if (fabs(a[p][q]) < 1e-300) {
+                    continue;
+                }
+                const double th = 0.5 * (a[q][q] - a[p][p]) / a[p][q];
+                const double t = (th >= 0 ? 1.0 : -1.0) / (fabs(th) + sqrt(th * th + 1.0));
+                const double c = 1.0 / sqrt(t * t + 1.0), sn = t * c;
+                for (int k = 0; k < n; ++k) {
+                    const double akp = a[k][p], akq = a[k][q];
+                    a[k][p] = c * akp - sn * akq;
+                    a[k][q] = sn * akp + c * akq;
+                }
+                for (int k = 0; k < n; ++k) {
+                    const double apk = a[p][k], aqk = a[q][k];
+                    a[p][k] = c * apk - sn * aqk;
+                    a[q][k] = sn * apk + c * aqk;
+                }
+            }
+        }
+    }
+    double lo = a[0][0];
+    for (int i = 1; i < n; ++i) {
+        lo = fmin(lo, a[i][i]);
+    }
+    return lo;
+}
+
+/* The update form keeps P PSD: thousands of GNSS-like updates with a
+ * measurement noise far below the prior (R = 1e-12 of the largest variance
+ * in double, 1e-6 = 8 eps in float), at varying attitude and lever arm,
+ * interleaved with velocity updates; every P passes se23_gauss_check and
+ * its smallest eigenvalue stays above -tol max_i P_ii. */
+static void test_kalman_update_keeps_p_psd_with_tiny_noise(void **state)
+{
+    (void)state;
+    se23t_rng_t rng;
+    se23t_rng_seed(&rng, 808);
+    se23_gauss_t g;
+    gt_random_gauss(&rng, 15, &g);
+    gt_random_cov(&rng, 15, 15, S, 1.0, 1e-2, g.P.m);
+#if SE23_CFG_DOUBLE
+    const double rel = 1e-12;
+#else
+    const double rel = 1e-6;
+#endif
+    double worst = INFINITY;
+    for (int k = 0; k < 3000; ++k) {
+        se23_pose_t T;
+        se23_vec3_t p, lever;
+        se23t_random_pose(&rng, 10.0, &T);
+        g.T.R = T.R;
+        se23t_random_vec3(&rng, 0.01, &p);
+        se23t_random_vec3(&rng, 1.0, &lever);
+        double s = 0;
+        for (int i = 0; i < 15; ++i) {
+            s = fmax(s, (double)g.P.m[S * i + i]);
+        }
+        const se23_real_t r = (se23_real_t)(rel * s);
+        const se23_mat3_t cov = {{{r, 0, 0}, {0, r, 0}, {0, 0, r}}};
+        se23_meas_t y;
+        for (int i = 0; i < 3; ++i) {
+            p.v[i] += g.T.p.v[i];
+        }
+        if (k % 3 == 2) {
+            assert_int_equal(se23_meas_vel_nav(&g.T, &g.T.v, &cov, &y), SE23_OK);
+        } else {
+            assert_int_equal(se23_meas_pos_nav(&g.T, &p, &lever, &cov, &y), SE23_OK);
+        }
+        assert_int_equal(se23_kalman_update(&g, &y, &g, NULL), SE23_OK);
+        assert_int_equal(se23_gauss_check(&g), SE23_OK);
+        if (k % 100 == 99) {
+            /* Re-inflate, as a prediction would, so that updates keep acting. */
+            for (int i = 0; i < 15; ++i) {
+                g.P.m[S * i + i] += SE23_R(1e-2);
+            }
+        }
+        if (k % 10 == 0) {
+            double smax = 0;
+            for (int i = 0; i < 15; ++i) {
+                smax = fmax(smax, (double)g.P.m[S * i + i]);
+            }
+            const double lo = min_eigenvalue(g.P.m, 15) / smax;
+            worst = fmin(worst, lo);
+            assert_true(lo >= -(double)SE23_CFG_COV_TOL);
+        }
+    }
+    print_message("smallest eigenvalue / max P_ii over 3000 updates: %.3g (tol %.1g)\n", worst,
+                  (double)SE23_CFG_COV_TOL);
+}
+
+/* The structure scan: zero blocks of H are skipped, so an H with only the
+ * rho block nonzero gives the same update as the dense formulas (covered
+ * above); here every single-block H and the all-zero H (S = R, P
+ * unchanged, dx = 0). */
+static void test_kalman_update_structure_blocks(void **state)
+{
+    (void)state;
+    se23t_rng_t rng;
+    se23t_rng_seed(&rng, 809);
+    se23_gauss_t g, a, b;
+    gt_random_gauss(&rng, 15, &g);
+    for (int blk = -1; blk < 5; ++blk) {
+        se23_meas_t y, yd;
+        random_meas(&rng, 4, &y);
+        for (int r = 0; r < 4; ++r) {
+            for (int j = 0; j < S; ++j) {
+                if (j / 3 != blk) {
+                    y.H[S * r + j] = SE23_R(0);
+                }
+            }
+        }
+        /* yd: the same H with denormal-free tiny entries in the zero
+         * blocks would take the dense path; compare with P's reference. */
+        yd = y;
+        se23_real_t nis_a, nis_b;
+        assert_int_equal(se23_kalman_update(&g, &y, &a, &nis_a), SE23_OK);
+        if (blk < 0) {
+            for (int i = 0; i < S * S; ++i) {
+                assert_true(a.P.m[i] == g.P.m[i]);
+            }
+            assert_memory_equal(&a.b_g, &g.b_g, sizeof a.b_g);
+        }
+        for (int r = 0; r < 4; ++r) {
+            yd.H[S * r + ((blk + 1) % 5) * 3] = SE23_R(1e-30);
+        }
+        assert_int_equal(se23_kalman_update(&g, &yd, &b, &nis_b), SE23_OK);
+        assert_near(nis_a, nis_b, 1e3 * SE23T_EPS, 1e3 * SE23T_EPS);
+        for (int i = 0; i < S * S; ++i) {
+            assert_near(a.P.m[i], b.P.m[i], 1e3 * SE23T_EPS, 1e3 * SE23T_EPS);
+        }
+    }
 }
 
 static void test_kalman_null_arguments_return_err_null(void **state)
@@ -435,6 +708,10 @@ int main(void)
         cmocka_unit_test(test_kalman_update_matches_dense_formulas),
         cmocka_unit_test(test_kalman_update_ignores_bias_columns_when_n_is_9),
         cmocka_unit_test(test_kalman_update_rejects_bad_input_untouched),
+        cmocka_unit_test(test_kalman_update_refuses_overflowing_results),
+        cmocka_unit_test(test_kalman_update_keeps_rotation_valid),
+        cmocka_unit_test(test_kalman_update_keeps_p_psd_with_tiny_noise),
+        cmocka_unit_test(test_kalman_update_structure_blocks),
         cmocka_unit_test(test_kalman_null_arguments_return_err_null),
         cmocka_unit_test(test_kalman_filter_estimates_biases_consistently),
     };

@@ -170,6 +170,67 @@ static void test_meas_models_reject_bad_input_untouched(void **state)
     assert_memory_equal(&out, &out0, sizeof out);
 }
 
+/* Every element of the output is written: rows beyond m = 3 and the bias
+ * columns are zero whatever the buffer held. */
+static void test_meas_models_define_every_element(void **state)
+{
+    (void)state;
+    se23t_rng_t rng;
+    se23t_rng_seed(&rng, 703);
+    se23_pose_t T;
+    se23_vec3_t y, l = {{SE23_R(0.1), SE23_R(-0.2), SE23_R(0.3)}};
+    se23_mat3_t cov;
+    se23t_random_pose(&rng, 5.0, &T);
+    se23t_random_vec3(&rng, 5.0, &y);
+    gt_random_cov(&rng, 3, 3, 3, 1.0, 0.1, &cov.m[0][0]);
+    for (int which = POS_NAV; which <= VEL_BODY; ++which) {
+        se23_meas_t out;
+        memset(&out, SENTINEL, sizeof out);
+        assert_int_equal(call_model((model_t)which, &T, &y, &l, &cov, &out), SE23_OK);
+        for (int i = 0; i < M; ++i) {
+            if (i >= 3) {
+                assert_true(out.z[i] == SE23_R(0));
+            }
+            for (int j = 0; j < S; ++j) {
+                if (i >= 3 || j >= 9) {
+                    assert_true(out.H[S * i + j] == SE23_R(0));
+                }
+            }
+            for (int j = 0; j < M; ++j) {
+                if (i >= 3 || j >= 3) {
+                    assert_true(out.R[M * i + j] == SE23_R(0));
+                }
+            }
+        }
+    }
+}
+
+/* The noise check is that of gauss.h, both sides of each tolerance:
+ * asymmetry and a negative eigenvalue of 0.5 tol s pass, 2 tol s fail. */
+static void test_meas_cov_check_tolerance_boundaries(void **state)
+{
+    (void)state;
+    se23_pose_t T;
+    se23_identity(&T);
+    const se23_vec3_t y = {{0}}, l = {{0}};
+    const double tol = (double)SE23_CFG_COV_TOL;
+    se23_meas_t out;
+    for (int side = 0; side < 2; ++side) {
+        const double k = side ? 2.0 : 0.5;
+        se23_mat3_t cov = {{{SE23_R(1), 0, 0}, {0, SE23_R(1), 0}, {0, 0, SE23_R(1)}}};
+        cov.m[0][2] = (se23_real_t)(k * tol);
+        assert_int_equal(se23_meas_pos_nav(&T, &y, &l, &cov, &out),
+                         side ? SE23_ERR_NOT_SYMMETRIC : SE23_OK);
+        /* diag(1, 1, -k tol): smallest eigenvalue -k tol s, s = 1. */
+        se23_mat3_t neg = {{{SE23_R(1), 0, 0}, {0, SE23_R(1), 0}, {0, 0, (se23_real_t)(-k * tol)}}};
+        assert_int_equal(se23_meas_pos_nav(&T, &y, &l, &neg, &out),
+                         side ? SE23_ERR_NOT_PSD : SE23_OK);
+    }
+    /* The zero matrix (an exact measurement) is valid. */
+    const se23_mat3_t zero = {{{0}}};
+    assert_int_equal(se23_meas_pos_nav(&T, &y, &l, &zero, &out), SE23_OK);
+}
+
 static void test_meas_null_arguments_return_err_null(void **state)
 {
     (void)state;
@@ -203,6 +264,8 @@ int main(void)
         cmocka_unit_test(test_meas_models_match_central_differences),
         cmocka_unit_test(test_meas_vel_body_is_zero_velocity_update),
         cmocka_unit_test(test_meas_models_reject_bad_input_untouched),
+        cmocka_unit_test(test_meas_models_define_every_element),
+        cmocka_unit_test(test_meas_cov_check_tolerance_boundaries),
         cmocka_unit_test(test_meas_null_arguments_return_err_null),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

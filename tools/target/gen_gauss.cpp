@@ -628,9 +628,12 @@ void add_kalman(Gens &g)
     g["se23_kalman_update"] = {
         kGaussEdges + 4,
         [](Ctx &c, int k) {
-            // edges: the gauss edges, then m = 0, m = 10, NaN in z, R not PSD
+            // edges (the state is trusted, types.h: only n and an overflowing
+            // mean are refused): n = 12, NaN in a bias, NaN in H, R not
+            // symmetric, P = 0 with a denormal R (D3: S below the pivot
+            // floor), then m = 0, m = 10, NaN in z, R not PSD
             Gauss x = gauss_any(c, k);
-            break_gauss(x, k);
+            if (k <= 1) break_gauss(x, k);
             Meas y;
             y.m = 1 + int(c.uniform(0, 9));
             y.z = Vec9L::Zero();
@@ -641,6 +644,13 @@ void add_kalman(Gens &g)
                 for (int j = 0; j < x.n; ++j) y.H(i, j) = c.uniform(-1, 1);
             }
             y.R.block(0, 0, y.m, y.m) = spd(c, y.m, 1e-2L);
+            if (k == 2) y.H(0, 4) = kNaN;
+            if (k == 3) y.R(0, y.m - 1) += LD(0.1) * y.R(0, 0) + LD(1e-3);
+            if (k == 4) {
+                x.P = Mat15L::Zero();
+                y.R = Mat99L::Zero();
+                for (int i = 0; i < y.m; ++i) y.R(i, i) = c.is_float ? LD(1e-40) : LD(1e-310);
+            }
             if (k == kGaussEdges) y.m = 0;
             if (k == kGaussEdges + 1) y.m = 10;
             if (k == kGaussEdges + 2) y.z(0) = kNaN;
@@ -654,17 +664,28 @@ void add_kalman(Gens &g)
             Rd rd{in};
             Gauss x = read_gauss(rd);
             const Meas y = read_meas(rd);
-            int st = gauss_status(x, c);
-            if (st != SE23_OK) return st;
+            // The state is trusted (kalman.h): only n is checked, and a
+            // mean that a correction could overflow (here: NaN) refused.
+            if (x.n != 9 && x.n != 15) return int(SE23_ERR_DIM);
             if (y.m < 1 || y.m > 9) return int(SE23_ERR_DIM);
             const int n = x.n, m = y.m;
             const MatXL H = y.H.block(0, 0, m, n), R = y.R.block(0, 0, m, m);
             const VecN z = y.z.head(m);
             if (!H.allFinite() || !z.allFinite() || !R.allFinite()) return int(SE23_ERR_NONFINITE);
-            st = cov_status(R, c);
+            int st = cov_status(R, c);
             if (st != SE23_OK) return st;
+            Row mean;
+            put_pose(mean, x.T);
+            put(mean, x.bg);
+            put(mean, x.ba);
+            if (!all_finite(mean)) return int(SE23_ERR_NONFINITE);
             const MatXL P = x.P.block(0, 0, n, n);
             const MatXL S = H * P * H.transpose() + R;
+            // S must be positive definite with pivots above the smallest
+            // normal number (kalman.h); the clear case of the edge above.
+            const LD smallest = c.is_float ? LD(1.17549435e-38L) : LD(2.2250738585072014e-308L);
+            if (Eigen::SelfAdjointEigenSolver<MatXL>(S).eigenvalues().minCoeff() < smallest)
+                return int(SE23_ERR_NOT_PSD);
             const MatXL K = P * H.transpose() * S.inverse();
             const VecN dx = K * z;
             const MatXL IKH = MatXL::Identity(n, n) - K * H;

@@ -1,0 +1,113 @@
+/**
+ * @file kalman_parts.h
+ * @brief Internal: the two halves of se23_kalman_update (kalman.h), the
+ *        covariance side (the update of P from the structure of H) and the
+ *        retraction of the mean, and the small symmetric matrices the
+ *        first needs (measurement noise R and innovation covariance S,
+ *        m x m, m <= SE23_MEAS_MMAX): validation and a packed Cholesky
+ *        factor. Not part of the public API.
+ *
+ * A translation unit apart from kalman.c on purpose: se23_kalman_update
+ * calls the two halves one after the other, and neither may be inlined
+ * into its frame: the covariance's work arrays (one n x m matrix, one
+ * packed m x m factor) must never share the stack with the retraction,
+ * whose sin/cos may take newlib's large-argument reduction.
+ *
+ * Packed storage: element (i, j), j <= i, of a lower triangle at
+ * L[se23_tri(i) + j].
+ */
+#ifndef SE23_KALMAN_PARTS_H
+#define SE23_KALMAN_PARTS_H
+
+#include <float.h>
+
+#include "se23/kalman.h"
+#include "se23/types.h"
+#include "se23_math.h"
+
+/** Reals of a packed lower triangle of SE23_MEAS_MMAX rows. */
+#define SE23_MEAS_TRI (SE23_MEAS_MMAX * (SE23_MEAS_MMAX + 1) / 2)
+
+/* |dx_k| <= SE23_KALMAN_CORR_MAX: |phi|^2 <= 3 CORR_MAX^2 cannot overflow,
+ * and the entries of exp(phi^) and J(phi) (at most 3 in magnitude), so
+ * those of R J(phi) nu (at most 27 CORR_MAX), stay far below MEAN_MAX.
+ * |mean entry| <= SE23_KALMAN_MEAN_MAX: adding such a correction cannot
+ * overflow. */
+#if SE23_CFG_DOUBLE
+#define SE23_KALMAN_CORR_MAX SE23_R(1e150)
+#define SE23_KALMAN_MEAN_MAX (SE23_R(DBL_MAX) / SE23_R(4))
+#else
+#define SE23_KALMAN_CORR_MAX SE23_R(1e18)
+#define SE23_KALMAN_MEAN_MAX (SE23_R(FLT_MAX) / SE23_R(4))
+#endif
+
+/* Fused multiply-add where the FPU has it (M4F single, M7 double: one
+ * instruction; the library's ISO C build never contracts a * b + c by
+ * itself), a * b + c elsewhere (x86-64 without -mfma would call libm). */
+#if SE23_CFG_DOUBLE
+#if defined(FP_FAST_FMA) || defined(__FP_FAST_FMA)
+#define SE23_KALMAN_FAST_FMA 1
+#endif
+#else
+#if defined(FP_FAST_FMAF) || defined(__FP_FAST_FMAF)
+#define SE23_KALMAN_FAST_FMA 1
+#endif
+#endif
+
+/** a b + c, with one rounding where the FPU fuses it. */
+static inline se23_real_t se23_kalman_fma(se23_real_t a, se23_real_t b, se23_real_t c)
+{
+#ifdef SE23_KALMAN_FAST_FMA
+    return SE23_LIBM(fma)(a, b, c);
+#else
+    return a * b + c;
+#endif
+}
+
+/** Offset of row i of a packed lower triangle, 0 <= i < SE23_MEAS_MMAX. */
+static inline int se23_tri(int i)
+{
+    static const int offset[SE23_MEAS_MMAX] = {0, 1, 3, 6, 10, 15, 21, 28, 36};
+    return offset[i];
+}
+
+/**
+ * Checks the leading m x m block of A (row stride `stride`) as gauss.h
+ * checks a covariance, with the same result as se23_cov_check (cov.h):
+ * finite, symmetric (|A_ij - A_ji| <= tol s), A + (tol s + FLT_MIN) I
+ * has a Cholesky factor with every pivot above 16 eps of its diagonal
+ * entry and at least the smallest normal number, s = max_i |A_ii|, tol = SE23_CFG_COV_TOL.
+ * Stack: one packed 9x9 factor instead of cov.h's 15x15 one.
+ * @return SE23_OK, SE23_ERR_NONFINITE, SE23_ERR_NOT_SYMMETRIC or
+ *         SE23_ERR_NOT_PSD.
+ */
+se23_status_t se23_meas_cov_check(const se23_real_t *A, int m, int stride);
+
+/**
+ * The covariance half of se23_kalman_update for a checked g (n = 9 or 15)
+ * and y (checked; bit b of mask set for each 3-column block b of H that
+ * holds a nonzero, zero blocks are skipped): decides
+ * everything that can fail, then stores P+ = P - U U^T into Pout (may
+ * alias g->P.m), the correction dx (n values) and the NIS.
+ * @return SE23_OK; SE23_ERR_NOT_PSD if S is not numerically positive
+ *         definite (a pivot of its Cholesky factor not above 16 eps
+ *         of its diagonal entry or below the smallest normal number); SE23_ERR_NONFINITE if a result would
+ *         overflow (|dx_k| > SE23_KALMAN_CORR_MAX, the NIS, or an entry of
+ *         P+). On error Pout and nis are not written (dx is scratch).
+ */
+se23_status_t se23_kalman_cov(const se23_gauss_t *g, const se23_meas_t *y,
+                              unsigned mask, se23_real_t *dx, se23_real_t *nis,
+                              se23_real_t *Pout);
+
+/**
+ * The mean half: out's T = g's T exp(dx_xi) with R re-orthonormalised,
+ * biases + dx_db (n = 15) or copied, n. Cannot fail for |dx_k| <=
+ * SE23_KALMAN_CORR_MAX and mean entries within SE23_KALMAN_MEAN_MAX:
+ * every value stays finite, and R exp(phi^) is within SE23_CFG_ROT_TOL + a
+ * few eps of SO(3), which se23_so3_normalize repairs. out may alias g
+ * (its P is not touched).
+ */
+void se23_kalman_retract(const se23_gauss_t *g, const se23_real_t *dx,
+                         se23_gauss_t *out);
+
+#endif /* SE23_KALMAN_PARTS_H */
