@@ -40,9 +40,9 @@ static int scan_h(const se23_meas_t *y, int n, unsigned *mask)
         for (int r = 0; r < y->m; ++r) {
             const se23_real_t *h = &y->H[S * r + 3 * b];
             mag += se23_fabs(h[0]) + se23_fabs(h[1]) + se23_fabs(h[2]);
-            bad = se23_kalman_fma(h[0], SE23_R(0), bad);
-            bad = se23_kalman_fma(h[1], SE23_R(0), bad);
-            bad = se23_kalman_fma(h[2], SE23_R(0), bad);
+            bad = se23_fma(h[0], SE23_R(0), bad);
+            bad = se23_fma(h[1], SE23_R(0), bad);
+            bad = se23_fma(h[2], SE23_R(0), bad);
         }
         if (mag > SE23_R(0)) {
             found |= 1u << (unsigned)b;

@@ -43,95 +43,20 @@
 
 enum { S = SE23_GAUSS_NMAX, M = SE23_MEAS_MMAX };
 
-/* A pivot must exceed PIVOT_EPS A_jj (the rule of cov.h) ... */
-#define PIVOT_EPS (SE23_R(16) * SE23_EPSILON)
-/* ... and be at least the smallest normal number: below it the pivot has
- * lost relative precision and 1 / sqrt(pivot) may overflow. */
 #if SE23_CFG_DOUBLE
-#define PIVOT_MIN DBL_MIN
 #define REAL_MAX DBL_MAX
 #else
-#define PIVOT_MIN FLT_MIN
 #define REAL_MAX FLT_MAX
 #endif
-/* Added to the PSD shift of the check so that the zero matrix passes (as
- * in cov.c). */
-#define TINY SE23_R(FLT_MIN)
 /* P_ii <= DIAG_MAX and |U_i|^2 <= DIAG_MAX make every entry of P - U U^T
  * finite: |P_ij| <= (1 + tol) max(P_ii, P_jj) (P PSD) and
  * |U_i . U_j| <= max(|U_i|^2, |U_j|^2), partial sums included. */
 #define DIAG_MAX (SE23_R(REAL_MAX) / SE23_R(4))
 
-static inline se23_real_t fma_(se23_real_t a, se23_real_t b, se23_real_t c)
-{
-    return se23_kalman_fma(a, b, c);
-}
-
-/* In place: L holds the packed lower triangle of a symmetric m x m A on
- * entry, its lower Cholesky factor on exit, except that the diagonal holds
- * the reciprocals 1 / L_jj (what the solves need). Refused (returns 0, L
- * then unspecified) unless every pivot is finite, exceeds 16 eps A_jj (the
- * rule of cov.h) and is at least the smallest normal number of the
- * precision (so that 1 / L_jj is finite and accurate); NaN is refused.
- * m^3/6 multiply-adds, m square roots and divisions. */
-static inline int chol(se23_real_t *L, int m)
-{
-    se23_real_t *lj = L; /* row j; row j + 1 starts j + 1 entries later */
-    for (int j = 0; j < m; ++j) {
-        se23_real_t d = lj[j];
-        const se23_real_t pmin = PIVOT_EPS * d;
-        for (int k = 0; k < j; ++k) {
-            d = fma_(-lj[k], lj[k], d);
-        }
-        if (!(d > pmin) || !(d >= PIVOT_MIN) || !se23_is_finite(d)) {
-            return 0;
-        }
-        const se23_real_t inv = SE23_R(1) / se23_sqrt(d);
-        lj[j] = inv;
-        se23_real_t *li = &lj[j + 1];
-        for (int i = j + 1; i < m; ++i) {
-            se23_real_t s = li[j];
-            for (int k = 0; k < j; ++k) {
-                s = fma_(-li[k], lj[k], s);
-            }
-            li[j] = s * inv;
-            li = &li[i + 1];
-        }
-        lj = &lj[j + 1];
-    }
-    return 1;
-}
-
 se23_status_t se23_meas_cov_check(const se23_real_t *A, int m, int stride)
 {
-    /* Finite: x * 0 is 0 for finite x and NaN for NaN or Inf. */
-    se23_real_t bad = SE23_R(0), s = SE23_R(0);
-    for (int i = 0; i < m; ++i) {
-        const se23_real_t *a = &A[stride * i];
-        for (int j = 0; j < m; ++j) {
-            bad = fma_(a[j], SE23_R(0), bad);
-        }
-        const se23_real_t d = se23_fabs(a[i]);
-        s = (d > s) ? d : s;
-    }
-    if (!se23_is_finite(bad)) {
-        return SE23_ERR_NONFINITE;
-    }
-    const se23_real_t tol = SE23_R(SE23_CFG_COV_TOL) * s, shift = tol + TINY;
-    se23_real_t L[SE23_MEAS_TRI];
-    se23_real_t *li = L;
-    for (int i = 0; i < m; ++i) {
-        const se23_real_t *a = &A[stride * i];
-        for (int j = 0; j < i; ++j) {
-            if (se23_fabs(a[j] - A[stride * j + i]) > tol) {
-                return SE23_ERR_NOT_SYMMETRIC;
-            }
-            li[j] = a[j];
-        }
-        li[i] = a[i] + shift;
-        li = &li[i + 1];
-    }
-    return chol(L, m) ? SE23_OK : SE23_ERR_NOT_PSD;
+    se23_real_t work[SE23_MEAS_TRI];
+    return se23_cov_check_work(A, m, stride, work);
 }
 
 /* The kernels take the rows of H (the columns of C and U) three at a
@@ -171,9 +96,9 @@ static void cross_cov(const se23_real_t *P, const se23_meas_t *y, int n,
             for (int i = 0; i < n; ++i) {
                 const se23_real_t *p = &P[S * i + j], *c0 = &acc[acc_stride * i];
                 const se23_real_t p0 = p[0], p1 = p[1], p2 = p[2];
-                const se23_real_t r0 = fma_(a02, p2, fma_(a01, p1, fma_(a00, p0, c0[0])));
-                const se23_real_t r1 = fma_(a12, p2, fma_(a11, p1, fma_(a10, p0, c0[1])));
-                const se23_real_t r2 = fma_(a22, p2, fma_(a21, p1, fma_(a20, p0, c0[2])));
+                const se23_real_t r0 = se23_fma(a02, p2, se23_fma(a01, p1, se23_fma(a00, p0, c0[0])));
+                const se23_real_t r1 = se23_fma(a12, p2, se23_fma(a11, p1, se23_fma(a10, p0, c0[1])));
+                const se23_real_t r2 = se23_fma(a22, p2, se23_fma(a21, p1, se23_fma(a20, p0, c0[2])));
                 se23_real_t *c = &C[M * i + g];
                 c[0] = r0;
                 c[1] = r1;
@@ -204,29 +129,29 @@ static void innovation_cov(const se23_meas_t *y, const int *blk, int nb,
                 const int j = 3 * blk[k];
                 /* C's rows 0..n-1, columns 0..padded(m)-1 are all written
                  * by cross_cov; the analyzer cannot follow the blocks. */
-                s = fma_(h[j], C[M * j + q], s); // NOLINT(clang-analyzer-core.CallAndMessage)
-                s = fma_(h[j + 1], C[M * (j + 1) + q], s);
-                s = fma_(h[j + 2], C[M * (j + 2) + q], s);
+                s = se23_fma(h[j], C[M * j + q], s); // NOLINT(clang-analyzer-core.CallAndMessage)
+                s = se23_fma(h[j + 1], C[M * (j + 1) + q], s);
+                s = se23_fma(h[j + 2], C[M * (j + 2) + q], s);
             }
             lq[r] = s;
         }
     }
 }
 
-/* x = L^-1 x for the factor of chol (reciprocal diagonal). */
+/* x = L^-1 x for a factor of se23_cov_chol_packed (reciprocal diagonal). */
 static void forward(const se23_real_t *L, int m, se23_real_t *x)
 {
     for (int r = 0; r < m; ++r) {
         const se23_real_t *lr = &L[se23_tri(r)];
         se23_real_t s = x[r];
         for (int k = 0; k < r; ++k) {
-            s = fma_(-lr[k], x[k], s);
+            s = se23_fma(-lr[k], x[k], s);
         }
         x[r] = s * lr[r];
     }
 }
 
-/* L_rk of the factor of chol (k < r), 1/L_rr for k = r, and 0
+/* L_rk of a factor of se23_cov_chol_packed (k < r), 1/L_rr for k = r, and 0
  * past the m rows (the padding). */
 static se23_real_t l_at(const se23_real_t *L, int m, int r, int k)
 {
@@ -248,9 +173,9 @@ static void solve_u_block(const se23_real_t *L, int n, int m, int g, int h,
         const se23_real_t *u = &U[M * i + h];
         se23_real_t *c = &U[M * i + g];
         const se23_real_t u0 = u[0], u1 = u[1], u2 = u[2];
-        const se23_real_t c0 = fma_(b02, u2, fma_(b01, u1, fma_(b00, u0, c[0])));
-        const se23_real_t c1 = fma_(b12, u2, fma_(b11, u1, fma_(b10, u0, c[1])));
-        const se23_real_t c2 = fma_(b22, u2, fma_(b21, u1, fma_(b20, u0, c[2])));
+        const se23_real_t c0 = se23_fma(b02, u2, se23_fma(b01, u1, se23_fma(b00, u0, c[0])));
+        const se23_real_t c1 = se23_fma(b12, u2, se23_fma(b11, u1, se23_fma(b10, u0, c[1])));
+        const se23_real_t c2 = se23_fma(b22, u2, se23_fma(b21, u1, se23_fma(b20, u0, c[2])));
         c[0] = c0;
         c[1] = c1;
         c[2] = c2;
@@ -278,14 +203,14 @@ static void solve_u(const se23_real_t *L, const se23_real_t *w, int n, int m,
         for (int i = 0; i < n; ++i) {
             se23_real_t *c = &U[M * i + g];
             const se23_real_t u0 = c[0] * d0;
-            const se23_real_t u1 = fma_(l10, u0, c[1]) * d1;
-            const se23_real_t u2 = fma_(l21, u1, fma_(l20, u0, c[2])) * d2;
+            const se23_real_t u1 = se23_fma(l10, u0, c[1]) * d1;
+            const se23_real_t u2 = se23_fma(l21, u1, se23_fma(l20, u0, c[2])) * d2;
             c[0] = u0;
             c[1] = u1;
             c[2] = u2;
             const se23_real_t d = (g == 0) ? SE23_R(0) : dx[i];
-            dx[i] = fma_(u2, w2, fma_(u1, w1, fma_(u0, w0, d)));
-            const se23_real_t q = fma_(u2, u2, fma_(u1, u1, u0 * u0));
+            dx[i] = se23_fma(u2, w2, se23_fma(u1, w1, se23_fma(u0, w0, d)));
+            const se23_real_t q = se23_fma(u2, u2, se23_fma(u1, u1, u0 * u0));
             worst = (q > worst || !se23_is_finite(q)) ? q : worst;
         }
     }
@@ -299,7 +224,7 @@ static inline void down_entry(const se23_real_t *src, const se23_real_t *U,
                               se23_real_t *Pout)
 {
     const se23_real_t *u = &U[M * j + g];
-    const se23_real_t s = fma_(a[2], u[2], fma_(a[1], u[1], fma_(a[0], u[0], src[S * i + j])));
+    const se23_real_t s = se23_fma(a[2], u[2], se23_fma(a[1], u[1], se23_fma(a[0], u[0], src[S * i + j])));
     Pout[S * i + j] = s;
     Pout[S * j + i] = s;
 }
@@ -320,9 +245,9 @@ static void down_rows3(const se23_real_t *src, const se23_real_t *U, int i,
     for (int j = i + 2; j < n; ++j) {
         const se23_real_t *u = &U[M * j + g];
         const se23_real_t u0 = u[0], u1 = u[1], u2 = u[2];
-        const se23_real_t s = fma_(a[2], u2, fma_(a[1], u1, fma_(a[0], u0, src[S * i + j])));
-        const se23_real_t t = fma_(b[2], u2, fma_(b[1], u1, fma_(b[0], u0, src[S * (i + 1) + j])));
-        const se23_real_t v = fma_(c2, u2, fma_(c1, u1, fma_(c0, u0, src[S * (i + 2) + j])));
+        const se23_real_t s = se23_fma(a[2], u2, se23_fma(a[1], u1, se23_fma(a[0], u0, src[S * i + j])));
+        const se23_real_t t = se23_fma(b[2], u2, se23_fma(b[1], u1, se23_fma(b[0], u0, src[S * (i + 1) + j])));
+        const se23_real_t v = se23_fma(c2, u2, se23_fma(c1, u1, se23_fma(c0, u0, src[S * (i + 2) + j])));
         Pout[S * i + j] = s;
         Pout[S * j + i] = s;
         Pout[S * (i + 1) + j] = t;
@@ -376,7 +301,7 @@ se23_status_t se23_kalman_cov(const se23_gauss_t *g, const se23_meas_t *y,
     }
     cross_cov(g->P.m, y, n, blk, nb, U);
     innovation_cov(y, blk, nb, U, L);
-    if (!chol(L, m)) {
+    if (!se23_cov_chol_packed(L, m)) {
         return SE23_ERR_NOT_PSD;
     }
     for (int r = 0; r < M; ++r) {
@@ -385,7 +310,7 @@ se23_status_t se23_kalman_cov(const se23_gauss_t *g, const se23_meas_t *y,
     forward(L, m, w);
     se23_real_t q = SE23_R(0), qmax;
     for (int r = 0; r < m; ++r) {
-        q = fma_(w[r], w[r], q);
+        q = se23_fma(w[r], w[r], q);
     }
     solve_u(L, w, n, m, U, dx, &qmax);
     if (!se23_is_finite(q) || !(qmax <= DIAG_MAX / SE23_R(3)) || !in_range(g->P.m, dx, n)) {

@@ -21,12 +21,13 @@
 
 #include <float.h>
 
+#include "cov.h"
 #include "se23/kalman.h"
 #include "se23/types.h"
 #include "se23_math.h"
 
 /** Reals of a packed lower triangle of SE23_MEAS_MMAX rows. */
-#define SE23_MEAS_TRI (SE23_MEAS_MMAX * (SE23_MEAS_MMAX + 1) / 2)
+#define SE23_MEAS_TRI SE23_COV_TRI(SE23_MEAS_MMAX)
 
 /* |dx_k| <= SE23_KALMAN_CORR_MAX: |phi|^2 <= 3 CORR_MAX^2 cannot overflow,
  * and the entries of exp(phi^) and J(phi) (at most 3 in magnitude), so
@@ -41,29 +42,6 @@
 #define SE23_KALMAN_MEAN_MAX (SE23_R(FLT_MAX) / SE23_R(4))
 #endif
 
-/* Fused multiply-add where the FPU has it (M4F single, M7 double: one
- * instruction; the library's ISO C build never contracts a * b + c by
- * itself), a * b + c elsewhere (x86-64 without -mfma would call libm). */
-#if SE23_CFG_DOUBLE
-#if defined(FP_FAST_FMA) || defined(__FP_FAST_FMA)
-#define SE23_KALMAN_FAST_FMA 1
-#endif
-#else
-#if defined(FP_FAST_FMAF) || defined(__FP_FAST_FMAF)
-#define SE23_KALMAN_FAST_FMA 1
-#endif
-#endif
-
-/** a b + c, with one rounding where the FPU fuses it. */
-static inline se23_real_t se23_kalman_fma(se23_real_t a, se23_real_t b, se23_real_t c)
-{
-#ifdef SE23_KALMAN_FAST_FMA
-    return SE23_LIBM(fma)(a, b, c);
-#else
-    return a * b + c;
-#endif
-}
-
 /** Offset of row i of a packed lower triangle, 0 <= i < SE23_MEAS_MMAX. */
 static inline int se23_tri(int i)
 {
@@ -72,12 +50,9 @@ static inline int se23_tri(int i)
 }
 
 /**
- * Checks the leading m x m block of A (row stride `stride`) as gauss.h
- * checks a covariance, with the same result as se23_cov_check (cov.h):
- * finite, symmetric (|A_ij - A_ji| <= tol s), A + (tol s + FLT_MIN) I
- * has a Cholesky factor with every pivot above 16 eps of its diagonal
- * entry and at least the smallest normal number, s = max_i |A_ii|, tol = SE23_CFG_COV_TOL.
- * Stack: one packed 9x9 factor instead of cov.h's 15x15 one.
+ * se23_cov_check (cov.h) of the leading m x m block of A (row stride
+ * `stride`), m <= SE23_MEAS_MMAX, with a work buffer sized for m: one
+ * packed 9x9 factor instead of a 15x15 one on the stack.
  * @return SE23_OK, SE23_ERR_NONFINITE, SE23_ERR_NOT_SYMMETRIC or
  *         SE23_ERR_NOT_PSD.
  */

@@ -41,6 +41,28 @@ static inline se23_real_t se23_cos(se23_real_t x) { return SE23_COS(x); }
 static inline se23_real_t se23_atan2(se23_real_t y, se23_real_t x) { return SE23_ATAN2(y, x); }
 static inline se23_real_t se23_fabs(se23_real_t x) { return SE23_FABS(x); }
 
+/** a b + c with one rounding where the FPU fuses it (M4F single, M7
+ *  double: one instruction; the library's ISO C build never contracts
+ *  a * b + c by itself), a * b + c elsewhere (x86-64 without -mfma would
+ *  call libm). */
+#if SE23_CFG_DOUBLE
+#if defined(FP_FAST_FMA) || defined(__FP_FAST_FMA)
+#define SE23_FAST_FMA 1
+#endif
+#else
+#if defined(FP_FAST_FMAF) || defined(__FP_FAST_FMAF)
+#define SE23_FAST_FMA 1
+#endif
+#endif
+static inline se23_real_t se23_fma(se23_real_t a, se23_real_t b, se23_real_t c)
+{
+#ifdef SE23_FAST_FMA
+    return SE23_LIBM(fma)(a, b, c);
+#else
+    return a * b + c;
+#endif
+}
+
 /** Nonzero if x is neither NaN nor infinite (C99 type-generic isfinite). */
 static inline int se23_is_finite(se23_real_t x) { return isfinite(x) != 0; }
 

@@ -1,6 +1,6 @@
 /* Unit tests of src/cov.c: covariance validation (finite, symmetric, PSD
- * within tolerance), the Cholesky factor and solve, and the congruence
- * A P A^T of a linear map. */
+ * within tolerance) and the packed Cholesky factor. */
+#include <float.h>
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -13,7 +13,7 @@
 #include "gauss_test.h"
 #include "se23_test.h"
 
-enum { S = SE23_COV_NMAX };
+enum { S = SE23_GAUSS_NMAX };
 
 static void test_cov_check_accepts_psd_and_singular(void **state)
 {
@@ -88,102 +88,86 @@ static void test_cov_check_psd_tolerance_both_ways(void **state)
     assert_int_equal(se23_cov_check(A, 2, S), SE23_ERR_NOT_PSD);
 }
 
-static void test_cov_chol_factors_and_solves(void **state)
+/* L = the packed lower triangle of the leading n x n block of A. */
+static void pack_lower(const se23_real_t *A, int n, se23_real_t *L)
+{
+    for (int i = 0, k = 0; i < n; ++i) {
+        for (int j = 0; j <= i; ++j) {
+            L[k++] = A[S * i + j];
+        }
+    }
+}
+
+static void test_cov_chol_packed_factors(void **state)
 {
     (void)state;
     se23t_rng_t rng;
     se23t_rng_seed(&rng, 502);
     for (int n = 1; n <= 15; ++n) {
-        se23_real_t A[S * S], L[S * S], x[S], b[S];
+        se23_real_t A[S * S], L[SE23_COV_TRI(S)];
         gt_random_cov(&rng, n, n, S, 1.0, 0.5, A);
-        assert_true(se23_cov_chol(A, n, S, SE23_R(0), L));
+        pack_lower(A, n, L);
+        assert_true(se23_cov_chol_packed(L, n));
+        /* The diagonal holds 1 / L_jj. */
         for (int i = 0; i < n; ++i) {
-            for (int j = 0; j < n; ++j) {
+            for (int j = 0; j <= i; ++j) {
                 double s = 0;
-                for (int k = 0; k < n; ++k) {
-                    s += (double)L[n * i + k] * L[n * j + k];
+                for (int k = 0; k <= j; ++k) {
+                    const double li = (k == i) ? 1.0 / L[SE23_COV_TRI(i) + k] : L[SE23_COV_TRI(i) + k];
+                    const double lj = (k == j) ? 1.0 / L[SE23_COV_TRI(j) + k] : L[SE23_COV_TRI(j) + k];
+                    s += li * lj;
                 }
                 assert_near(s, A[S * i + j], 64 * SE23T_EPS * n * 10, 0.0);
-                if (j > i) {
-                    assert_true(L[n * i + j] == SE23_R(0));
-                }
             }
-            x[i] = (se23_real_t)se23t_normal(&rng);
         }
-        for (int i = 0; i < n; ++i) {
-            double s = 0;
-            for (int k = 0; k < n; ++k) {
-                s += (double)A[S * i + k] * x[k];
-            }
-            b[i] = (se23_real_t)s;
-        }
-        se23_cov_chol_solve(L, n, b);
-        /* cond(A) <= ~ (|G|^2 + 0.5) / 0.5: a few hundred. */
-        assert_array_near(b, x, n, 1e5 * SE23T_EPS, 0.0);
     }
 }
 
-static void test_cov_chol_refuses_singular_and_nan(void **state)
+/* Each refusal rule, on both sides of its threshold. */
+static void test_cov_chol_packed_pivot_rules_both_ways(void **state)
 {
     (void)state;
-    se23_real_t A[S * S] = {0}, L[S * S];
-    A[0] = SE23_R(1);
-    assert_false(se23_cov_chol(A, 2, S, SE23_R(0), L)); /* zero pivot */
-    assert_true(se23_cov_chol(A, 2, S, SE23_R(1e-3), L)); /* shifted */
-    /* Rank one [[1, 1], [1, 1]]: second pivot is rounding noise. */
-    A[1] = A[S] = A[S + 1] = SE23_R(1);
-    assert_false(se23_cov_chol(A, 2, S, SE23_R(0), L));
-    A[S + 1] = (se23_real_t)NAN;
-    assert_false(se23_cov_chol(A, 2, S, SE23_R(1), L));
+    se23_real_t L[3];
+    /* [[1, 0], [0, 0]]: zero pivot; shifted by 1e-3 it factors. */
+    L[0] = SE23_R(1), L[1] = SE23_R(0), L[2] = SE23_R(0);
+    assert_false(se23_cov_chol_packed(L, 2));
+    L[0] = SE23_R(1), L[1] = SE23_R(0), L[2] = SE23_R(1e-3);
+    assert_true(se23_cov_chol_packed(L, 2));
+    /* [[1, 1], [1, 1 + d]]: the second pivot d must exceed 16 eps (1 + d). */
+    const se23_real_t eps = (se23_real_t)SE23T_EPS;
+    L[0] = SE23_R(1), L[1] = SE23_R(1), L[2] = SE23_R(1) + SE23_R(8) * eps;
+    assert_false(se23_cov_chol_packed(L, 2));
+    L[0] = SE23_R(1), L[1] = SE23_R(1), L[2] = SE23_R(1) + SE23_R(64) * eps;
+    assert_true(se23_cov_chol_packed(L, 2));
+    /* A pivot below the smallest normal number is refused, one at it not. */
+#if SE23_CFG_DOUBLE
+    const se23_real_t tiny = DBL_MIN;
+#else
+    const se23_real_t tiny = FLT_MIN;
+#endif
+    L[0] = tiny / SE23_R(2);
+    assert_false(se23_cov_chol_packed(L, 1));
+    L[0] = tiny;
+    assert_true(se23_cov_chol_packed(L, 1));
+    L[0] = SE23_R(1), L[1] = SE23_R(0), L[2] = (se23_real_t)NAN;
+    assert_false(se23_cov_chol_packed(L, 2));
+    L[0] = (se23_real_t)INFINITY;
+    assert_false(se23_cov_chol_packed(L, 1));
 }
 
-/* A map given by a dense n x n matrix (row-major, stride S). */
-typedef struct {
-    const se23_real_t *A;
-    int n;
-} dense_ctx_t;
-
-static void dense_map(const void *ctx, const se23_real_t *x, se23_real_t *y)
-{
-    const dense_ctx_t *c = (const dense_ctx_t *)ctx;
-    for (int i = 0; i < c->n; ++i) {
-        se23_real_t s = 0;
-        for (int k = 0; k < c->n; ++k) {
-            s += c->A[S * i + k] * x[k];
-        }
-        y[i] = s;
-    }
-}
-
-static void test_cov_congruence_matches_dense_and_is_symmetric(void **state)
+/* The check with a small work buffer gives the same answers. */
+static void test_cov_check_work_matches_check(void **state)
 {
     (void)state;
     se23t_rng_t rng;
     se23t_rng_seed(&rng, 503);
-    for (int n = 1; n <= 15; n += 7) {
-        se23_real_t A[S * S], P[S * S] = {0}, out[S * S] = {0};
-        for (int i = 0; i < S * S; ++i) {
-            A[i] = (se23_real_t)se23t_normal(&rng);
-        }
-        gt_random_cov(&rng, n, n, S, 1.0, 0.1, P);
-        const dense_ctx_t ctx = {A, n};
-        se23_cov_congruence(dense_map, &ctx, n, P, out);
-        for (int i = 0; i < n; ++i) {
-            for (int j = 0; j < n; ++j) {
-                double s = 0, mag = 0;
-                for (int k = 0; k < n; ++k) {
-                    for (int l = 0; l < n; ++l) {
-                        const double t = (double)A[S * i + k] * P[S * k + l] * A[S * j + l];
-                        s += t;
-                        mag += fabs(t);
-                    }
-                }
-                assert_near(out[S * i + j], s, 4.0 * n * SE23T_EPS * mag, 0.0);
-                assert_true(out[S * i + j] == out[S * j + i]);
-            }
-        }
-        se23_cov_congruence(dense_map, &ctx, n, P, P); /* aliasing */
-        assert_memory_equal(P, out, sizeof P);
+    for (int n = 1; n <= 9; ++n) {
+        se23_real_t A[S * S], work[SE23_COV_TRI(9)];
+        gt_random_cov(&rng, n, n, S, 1.0, 0.1, A);
+        assert_int_equal(se23_cov_check_work(A, n, S, work), se23_cov_check(A, n, S));
+        A[S * (n - 1) + (n - 1)] = -SE23_R(1);
+        assert_int_equal(se23_cov_check_work(A, n, S, work), SE23_ERR_NOT_PSD);
+        assert_int_equal(se23_cov_check(A, n, S), SE23_ERR_NOT_PSD);
     }
 }
 
@@ -194,9 +178,9 @@ int main(void)
         cmocka_unit_test(test_cov_check_rejects_nonfinite),
         cmocka_unit_test(test_cov_check_symmetry_tolerance_both_ways),
         cmocka_unit_test(test_cov_check_psd_tolerance_both_ways),
-        cmocka_unit_test(test_cov_chol_factors_and_solves),
-        cmocka_unit_test(test_cov_chol_refuses_singular_and_nan),
-        cmocka_unit_test(test_cov_congruence_matches_dense_and_is_symmetric),
+        cmocka_unit_test(test_cov_chol_packed_factors),
+        cmocka_unit_test(test_cov_chol_packed_pivot_rules_both_ways),
+        cmocka_unit_test(test_cov_check_work_matches_check),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
