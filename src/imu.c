@@ -66,8 +66,8 @@ se23_status_t se23_imu_increment(const se23_imu_sample_t *s, se23_pose_t *ups)
     return SE23_OK;
 }
 
-se23_status_t se23_imu_increment_euler(const se23_imu_sample_t *s,
-                                       se23_pose_t *ups)
+se23_status_t se23_imu_increment_forster(const se23_imu_sample_t *s,
+                                         se23_pose_t *ups)
 {
     SE23_CHECK_NOT_NULL(s);
     SE23_CHECK_NOT_NULL(ups);

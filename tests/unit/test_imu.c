@@ -1,7 +1,7 @@
-/* Unit and property tests of src/imu.c: the exact increment, the paper's
- * Euler increment, the propagation step on flat and rotating Earth, the
- * carried-state conversions, and every bad-input path. The long comparisons
- * against an RK4 integration of the continuous equations are in
+/* Unit and property tests of src/imu.c: the exact increment, Forster et
+ * al.'s first-order increment, the propagation step on flat and rotating
+ * Earth, the carried-state conversions, and every bad-input path. The long
+ * comparisons against an RK4 integration of the continuous equations are in
  * tests/reference/crosscheck_nav.cpp. */
 #include <math.h>
 #include <setjmp.h>
@@ -170,7 +170,7 @@ static void test_imu_increment_solves_ode_in_dt(void **state)
     }
 }
 
-static void test_imu_increment_euler_is_first_order(void **state)
+static void test_imu_increment_forster_is_first_order(void **state)
 {
     (void)state;
     se23t_rng_t rng;
@@ -178,15 +178,15 @@ static void test_imu_increment_euler_is_first_order(void **state)
     se23_imu_sample_t s = random_sample(&rng, 0.5, 0.1);
     se23_pose_t u, e;
     assert_int_equal(se23_imu_increment(&s, &u), SE23_OK);
-    assert_int_equal(se23_imu_increment_euler(&s, &e), SE23_OK);
-    /* Same rotation; velocity (dt f) and position (dt^2 f / 2) as printed,
-     * with the paper's missing 1/2 restored. */
+    assert_int_equal(se23_imu_increment_forster(&s, &e), SE23_OK);
+    /* Same rotation; velocity dt f and position dt^2 f / 2 (Forster et
+     * al.'s model; the paper's remark prints dt^2 f, missing the 1/2). */
     assert_mat3_near(&e.R, &u.R, 0);
     for (int i = 0; i < 3; ++i) {
         assert_near(e.v.v[i], (double)s.f_b.v[i] * s.dt, 0, 2 * SE23T_EPS);
         assert_near(e.p.v[i], 0.5 * s.f_b.v[i] * s.dt * s.dt, 0, 4 * SE23T_EPS);
     }
-    /* Composing m Euler sub-steps converges to the exact increment at first
+    /* Composing m Forster sub-steps converges to the exact increment at first
      * order: halving the sub-step halves the error. */
     double err[2];
     for (int r = 0; r < 2; ++r) {
@@ -196,7 +196,7 @@ static void test_imu_increment_euler_is_first_order(void **state)
         se23_pose_t acc, inc, I;
         se23_identity(&acc);
         se23_identity(&I);
-        assert_int_equal(se23_imu_increment_euler(&sub, &inc), SE23_OK);
+        assert_int_equal(se23_imu_increment_forster(&sub, &inc), SE23_OK);
         for (int k = 0; k < m; ++k) {
             se23_imu_transition(&I, &acc, &inc, sub.dt, &acc);
         }
@@ -209,7 +209,7 @@ static void test_imu_increment_euler_is_first_order(void **state)
         s.f_b.v[i] = SE23_R(3) * s.w_ib_b.v[i];
     }
     assert_int_equal(se23_imu_increment(&s, &u), SE23_OK);
-    assert_int_equal(se23_imu_increment_euler(&s, &e), SE23_OK);
+    assert_int_equal(se23_imu_increment_forster(&s, &e), SE23_OK);
     assert_true(pose_diff(&u, &e) <= TOL);
 }
 
@@ -503,9 +503,9 @@ static se23_status_t call_increment(const se23_imu_sample_t *s, void *out)
     return se23_imu_increment(s, out);
 }
 
-static se23_status_t call_increment_euler(const se23_imu_sample_t *s, void *out)
+static se23_status_t call_increment_forster(const se23_imu_sample_t *s, void *out)
 {
-    return se23_imu_increment_euler(s, out);
+    return se23_imu_increment_forster(s, out);
 }
 
 static se23_earth_model_t step_model;
@@ -521,7 +521,7 @@ static void test_imu_increment_rejects_bad_samples(void **state)
     (void)state;
     se23_pose_t u;
     check_bad_samples(call_increment, &u, sizeof u, SE23_CFG_DT_MAX);
-    check_bad_samples(call_increment_euler, &u, sizeof u, SE23_CFG_DT_MAX);
+    check_bad_samples(call_increment_forster, &u, sizeof u, SE23_CFG_DT_MAX);
 }
 
 /* The internal step used by covariance propagation returns the same state
@@ -642,8 +642,8 @@ static void test_imu_null_arguments_return_err_null(void **state)
     assert_int_equal(se23_earth_model_init(&g, &g, SE23_R(0.01), SE23_R(0.01), &m), SE23_OK);
     assert_int_equal(se23_imu_increment(NULL, &T), SE23_ERR_NULL);
     assert_int_equal(se23_imu_increment(&s, NULL), SE23_ERR_NULL);
-    assert_int_equal(se23_imu_increment_euler(NULL, &T), SE23_ERR_NULL);
-    assert_int_equal(se23_imu_increment_euler(&s, NULL), SE23_ERR_NULL);
+    assert_int_equal(se23_imu_increment_forster(NULL, &T), SE23_ERR_NULL);
+    assert_int_equal(se23_imu_increment_forster(&s, NULL), SE23_ERR_NULL);
     assert_int_equal(se23_imu_step(NULL, &T, &s, &T), SE23_ERR_NULL);
     assert_int_equal(se23_imu_step(&m, NULL, &s, &T), SE23_ERR_NULL);
     assert_int_equal(se23_imu_step(&m, &T, NULL, &T), SE23_ERR_NULL);
@@ -660,7 +660,7 @@ int main(void)
         cmocka_unit_test(test_imu_increment_matches_so3_series),
         cmocka_unit_test(test_imu_increment_composes_over_split_interval),
         cmocka_unit_test(test_imu_increment_solves_ode_in_dt),
-        cmocka_unit_test(test_imu_increment_euler_is_first_order),
+        cmocka_unit_test(test_imu_increment_forster_is_first_order),
         cmocka_unit_test(test_imu_step_flat_circle_is_exact),
         cmocka_unit_test(test_imu_step_rotating_earth_keeps_body_at_rest),
         cmocka_unit_test(test_imu_step_keeps_rotation_orthonormal),

@@ -90,9 +90,9 @@ static void euler_step(const se23_earth_model_t *m, const se23_imu_sample_t *s, 
                        se23_pose_t *Tc)
 {
     se23_pose_t u;
-    const se23_status_t st = se23_imu_increment_euler(s, &u);
+    const se23_status_t st = se23_imu_increment_forster(s, &u);
     if (st != SE23_OK) {
-        die("se23_imu_increment_euler", st);
+        die("se23_imu_increment_forster", st);
     }
     if (printed) {
         for (int i = 0; i < 3; ++i) {

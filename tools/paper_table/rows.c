@@ -67,7 +67,7 @@ void factor_build(factor_t *fa, const raw_sample_t *wf, long n, double dt)
             paper_die(PROG, "se23_preint_unc_add", st);
         }
     }
-    fa->eu = integrate(fa, no_bias, se23_imu_increment_euler);
+    fa->eu = integrate(fa, no_bias, se23_imu_increment_forster);
 }
 
 static void add_error(row_acc_t *a, const se23_pose_t *approx, const se23_pose_t *ref)
@@ -85,7 +85,7 @@ void factor_score(const factor_t *fa, const double db[6], row_acc_t acc[N_ROWS])
 {
     const se23_vec3_t bg = {{db[0], db[1], db[2]}}, ba = {{db[3], db[4], db[5]}};
     const se23_preint_t ref = integrate(fa, db, se23_imu_increment);
-    const se23_preint_t ref_eu = integrate(fa, db, se23_imu_increment_euler);
+    const se23_preint_t ref_eu = integrate(fa, db, se23_imu_increment_forster);
     se23_preint_t corr[N_ROWS];
     se23_status_t st = se23_preint_unc_correct_classic(&fa->ex, &bg, &ba, &corr[ROW_FORSTER_EXACT]);
     if (st == SE23_OK) {

@@ -9,7 +9,7 @@
  * increment model as its Deltas):
  *   ROW_FORSTER        Forster et al. 2017 as a pipeline: Deltas of their
  *                      discrete model (exp(w dt), f dt, f dt^2/2,
- *                      se23_imu_increment_euler), their Jacobians, scored
+ *                      se23_imu_increment_forster), their Jacobians, scored
  *                      against re-integration with that model
  *   ROW_FORSTER_EXACT  Forster et al.'s Jacobians applied to the exact
  *                      Deltas (se23_preint_unc_correct_classic as is)

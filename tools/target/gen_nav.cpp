@@ -268,7 +268,7 @@ void add_nav(Gens &g)
                                    if (st == SE23_OK) put_pose(out, upsilon_expm(s.w, s.f, s.dt));
                                    return st;
                                }};
-    g["se23_imu_increment_euler"] = {
+    g["se23_imu_increment_forster"] = {
         7, increment_input, [increment_status](const Ctx &, const Row &in, Row &out) {
             const int st = increment_status(in);
             Rd rd{in};
@@ -442,7 +442,7 @@ void add_nav(Gens &g)
     };
     g["se23_preint_predict"] = predict(0);
     g["se23_preint_predict_carried"] = predict(1);
-    for (const char *n : {"se23_earth_gamma", "se23_imu_increment", "se23_imu_increment_euler",
+    for (const char *n : {"se23_earth_gamma", "se23_imu_increment", "se23_imu_increment_forster",
                           "se23_imu_transition", "se23_imu_step", "se23_imu_carried_from_user",
                           "se23_imu_user_from_carried", "se23_preint_predict",
                           "se23_preint_predict_carried"}) {
