@@ -35,6 +35,7 @@
  * Functions index:
  *   se23_imu_increment          exact Upsilon of one sample
  *   se23_imu_increment_forster  Forster et al.'s first-order Upsilon (f dt^2/2), for comparison
+ *   se23_imu_increment_paper    the paper's literal Upsilon, eq. backtofuture (0), for comparison
  *   se23_imu_transition         out = Gamma Phi_t(T) Upsilon, no checks
  *   se23_imu_step               one checked propagation step of a carried state
  *   se23_imu_carried_from_user, se23_imu_user_from_carried   v' = v + Omega x p
@@ -83,6 +84,18 @@ se23_status_t se23_imu_increment(const se23_imu_sample_t *s, se23_pose_t *ups);
  */
 se23_status_t se23_imu_increment_forster(const se23_imu_sample_t *s,
                                          se23_pose_t *ups);
+
+/**
+ * ups = (exp(w dt ^), dt f, 0): the paper's increment exactly as printed in
+ * eq. backtofuture ("to the first order in dt"), the one its noise model
+ * (eq. discrete3) and its bias correction (eq. approx2:eq) start from. It
+ * differs from se23_imu_increment_forster only in the position, by
+ * dt^2 f / 2, so over a fixed time its position error also shrinks like dt,
+ * with a larger constant (the whole f dt^2 / 2 of every sample is lost).
+ * Provided to run the paper's comparisons with its own increment (README).
+ * @return as se23_imu_increment.
+ */
+se23_status_t se23_imu_increment_paper(const se23_imu_sample_t *s, se23_pose_t *ups);
 
 /**
  * out = Gamma Phi_t(T) Upsilon  (paper eq. discrete), Phi_t(R, v, p) =
