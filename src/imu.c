@@ -66,8 +66,12 @@ se23_status_t se23_imu_increment(const se23_imu_sample_t *s, se23_pose_t *ups)
     return SE23_OK;
 }
 
-se23_status_t se23_imu_increment_euler(const se23_imu_sample_t *s,
-                                       se23_pose_t *ups)
+/* The first-order increments (exp(w dt ^), dt f, pos_coeff dt^2 f): the
+ * rotation exact, R held at its start value in the velocity and position
+ * lines. pos_coeff = 1/2 is Forster et al.'s model, 0 the paper's eq.
+ * backtofuture. */
+static se23_status_t first_order_increment(const se23_imu_sample_t *s, se23_real_t pos_coeff,
+                                           se23_pose_t *ups)
 {
     SE23_CHECK_NOT_NULL(s);
     SE23_CHECK_NOT_NULL(ups);
@@ -81,9 +85,20 @@ se23_status_t se23_imu_increment_euler(const se23_imu_sample_t *s,
     se23_pose_t out;
     rotation_increment(s, &phi, &theta, &c, &out.R);
     se23_v3_scale(&s->f_b, s->dt, &out.v);
-    se23_v3_scale(&s->f_b, SE23_R(0.5) * s->dt * s->dt, &out.p);
+    se23_v3_scale(&s->f_b, pos_coeff * s->dt * s->dt, &out.p);
     *ups = out;
     return SE23_OK;
+}
+
+se23_status_t se23_imu_increment_forster(const se23_imu_sample_t *s,
+                                         se23_pose_t *ups)
+{
+    return first_order_increment(s, SE23_R(0.5), ups);
+}
+
+se23_status_t se23_imu_increment_paper(const se23_imu_sample_t *s, se23_pose_t *ups)
+{
+    return first_order_increment(s, SE23_R(0), ups);
 }
 
 void se23_imu_transition(const se23_pose_t *gamma, const se23_pose_t *T,

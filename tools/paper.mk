@@ -4,7 +4,7 @@
 #
 #   make paper-table       the paper's Table "Higher-order errors for a
 #                          low-cost IMU", full size (600 s, 200 fresh bias
-#                          draws per factor, two draw schemes, ~36 s of
+#                          draws per factor, two draw schemes, ~31 s of
 #                          CPU), plus the trajectory figure
 #   make paper-montecarlo  the paper's Figure on Monte Carlo clouds: mean NEES
 #                          of the exponential model and of a standard EKF at

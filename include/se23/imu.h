@@ -34,7 +34,8 @@
  *
  * Functions index:
  *   se23_imu_increment          exact Upsilon of one sample
- *   se23_imu_increment_euler    the paper's first-order (Euler) Upsilon, for comparison
+ *   se23_imu_increment_forster  Forster et al.'s first-order Upsilon (f dt^2/2), for comparison
+ *   se23_imu_increment_paper    the paper's literal Upsilon, eq. backtofuture (0), for comparison
  *   se23_imu_transition         out = Gamma Phi_t(T) Upsilon, no checks
  *   se23_imu_step               one checked propagation step of a carried state
  *   se23_imu_carried_from_user, se23_imu_user_from_carried   v' = v + Omega x p
@@ -70,16 +71,31 @@ typedef struct {
 se23_status_t se23_imu_increment(const se23_imu_sample_t *s, se23_pose_t *ups);
 
 /**
- * ups = the paper's first-order (Euler) increment, in the remark after
- * eq. discrete2: R^upsilon held constant over dt in the velocity and
- * position lines, i.e. (exp(w dt ^), dt f, dt^2 f / 2). The paper prints
- * dt^2 f without the 1/2 (a typo, DESIGN.md section 3); this is the
- * corrected form. Its error per sample is O(|w| dt^2 |f|) in velocity:
- * provided only to measure what the exact increment gains (README).
+ * ups = (exp(w dt ^), dt f, dt^2 f / 2): the discrete model of Forster et
+ * al., "On-manifold preintegration for real-time visual-inertial odometry",
+ * IEEE T-RO 2017, the rotation exact and R held at its value at the start of
+ * the sample in the velocity and position lines. It is also the paper's
+ * remark after eq. discrete2 with its missing 1/2 restored (the paper prints
+ * dt^2 f, DESIGN.md section 3). First order in dt: its error per sample is
+ * O(|w| |f| dt^2) in velocity, so over a fixed time the error shrinks like dt.
+ * Provided to measure what the exact increment gains and to run Forster et
+ * al.'s pipeline as they define it (README).
  * @return as se23_imu_increment.
  */
-se23_status_t se23_imu_increment_euler(const se23_imu_sample_t *s,
-                                       se23_pose_t *ups);
+se23_status_t se23_imu_increment_forster(const se23_imu_sample_t *s,
+                                         se23_pose_t *ups);
+
+/**
+ * ups = (exp(w dt ^), dt f, 0): the paper's increment exactly as printed in
+ * eq. backtofuture ("to the first order in dt"), the one its noise model
+ * (eq. discrete3) and its bias correction (eq. approx2:eq) start from. It
+ * differs from se23_imu_increment_forster only in the position, by
+ * dt^2 f / 2, so over a fixed time its position error also shrinks like dt,
+ * with a larger constant (the whole f dt^2 / 2 of every sample is lost).
+ * Provided to run the paper's comparisons with its own increment (README).
+ * @return as se23_imu_increment.
+ */
+se23_status_t se23_imu_increment_paper(const se23_imu_sample_t *s, se23_pose_t *ups);
 
 /**
  * out = Gamma Phi_t(T) Upsilon  (paper eq. discrete), Phi_t(R, v, p) =

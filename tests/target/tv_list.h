@@ -68,7 +68,8 @@ TV_CUSTOM(se23_earth_model_init_wgs84, 5, TV_REALS(se23_earth_model_t), 16)
 
 /* imu.h */
 TV_S1(se23_imu_increment, se23_imu_sample_t, se23_pose_t, 16)
-TV_S1(se23_imu_increment_euler, se23_imu_sample_t, se23_pose_t, 16)
+TV_S1(se23_imu_increment_forster, se23_imu_sample_t, se23_pose_t, 16)
+TV_S1(se23_imu_increment_paper, se23_imu_sample_t, se23_pose_t, 16)
 TV_CUSTOM(se23_imu_transition, 3 * TV_REALS(se23_pose_t) + 1, TV_REALS(se23_pose_t), 16)
 TV_CUSTOM(se23_imu_step,
           TV_REALS(se23_earth_model_t) + TV_REALS(se23_pose_t) + TV_REALS(se23_imu_sample_t),

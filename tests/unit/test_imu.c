@@ -1,8 +1,8 @@
-/* Unit and property tests of src/imu.c: the exact increment, the paper's
- * Euler increment, the propagation step on flat and rotating Earth, the
- * carried-state conversions, and every bad-input path. The long comparisons
- * against an RK4 integration of the continuous equations are in
- * tests/reference/crosscheck_nav.cpp. */
+/* Unit and property tests of src/imu.c: the exact increment, Forster et
+ * al.'s and the paper's first-order increments, the propagation step on
+ * flat and rotating Earth, the carried-state conversions, and every
+ * bad-input path. The long comparisons against an RK4 integration of the
+ * continuous equations are in tests/reference/crosscheck_nav.cpp. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -170,7 +170,37 @@ static void test_imu_increment_solves_ode_in_dt(void **state)
     }
 }
 
-static void test_imu_increment_euler_is_first_order(void **state)
+typedef se23_status_t (*increment_fn)(const se23_imu_sample_t *, se23_pose_t *);
+
+/* Largest entry error, against the exact increment u of s, of m sub-steps
+ * of s by the increment inc composed with se23_imu_transition (Gamma = I). */
+static double substeps_error(increment_fn inc, const se23_imu_sample_t *s, int m,
+                             const se23_pose_t *u)
+{
+    se23_imu_sample_t sub = *s;
+    sub.dt = (se23_real_t)(s->dt / m);
+    se23_pose_t acc, step, I;
+    se23_identity(&acc);
+    se23_identity(&I);
+    assert_int_equal(inc(&sub, &step), SE23_OK);
+    for (int k = 0; k < m; ++k) {
+        se23_imu_transition(&I, &acc, &step, sub.dt, &acc);
+    }
+    return pose_diff(&acc, u);
+}
+
+/* Composing m sub-steps of inc converges to the exact increment of s at
+ * first order: doubling m halves the error. */
+static void assert_first_order(increment_fn inc, const se23_imu_sample_t *s)
+{
+    se23_pose_t u;
+    assert_int_equal(se23_imu_increment(s, &u), SE23_OK);
+    const double e64 = substeps_error(inc, s, 64, &u), e128 = substeps_error(inc, s, 128, &u);
+    assert_true(e64 > 1e-4); /* ~ dt^2 |w| |f| / (2 m): far above rounding */
+    assert_near(e64 / e128, 2.0, 0.1, 0);
+}
+
+static void test_imu_increment_forster_is_first_order(void **state)
 {
     (void)state;
     se23t_rng_t rng;
@@ -178,39 +208,57 @@ static void test_imu_increment_euler_is_first_order(void **state)
     se23_imu_sample_t s = random_sample(&rng, 0.5, 0.1);
     se23_pose_t u, e;
     assert_int_equal(se23_imu_increment(&s, &u), SE23_OK);
-    assert_int_equal(se23_imu_increment_euler(&s, &e), SE23_OK);
-    /* Same rotation; velocity (dt f) and position (dt^2 f / 2) as printed,
-     * with the paper's missing 1/2 restored. */
+    assert_int_equal(se23_imu_increment_forster(&s, &e), SE23_OK);
+    /* Same rotation; velocity dt f and position dt^2 f / 2 (Forster et
+     * al.'s model; the paper's remark prints dt^2 f, missing the 1/2). */
     assert_mat3_near(&e.R, &u.R, 0);
     for (int i = 0; i < 3; ++i) {
         assert_near(e.v.v[i], (double)s.f_b.v[i] * s.dt, 0, 2 * SE23T_EPS);
         assert_near(e.p.v[i], 0.5 * s.f_b.v[i] * s.dt * s.dt, 0, 4 * SE23T_EPS);
     }
-    /* Composing m Euler sub-steps converges to the exact increment at first
-     * order: halving the sub-step halves the error. */
-    double err[2];
-    for (int r = 0; r < 2; ++r) {
-        const int m = 64 << r;
-        se23_imu_sample_t sub = s;
-        sub.dt = (se23_real_t)(s.dt / m);
-        se23_pose_t acc, inc, I;
-        se23_identity(&acc);
-        se23_identity(&I);
-        assert_int_equal(se23_imu_increment_euler(&sub, &inc), SE23_OK);
-        for (int k = 0; k < m; ++k) {
-            se23_imu_transition(&I, &acc, &inc, sub.dt, &acc);
-        }
-        err[r] = pose_diff(&acc, &u);
-    }
-    assert_true(err[0] > 1e-4); /* ~ dt^2 |w| |f| / (2 m): far above rounding */
-    assert_near(err[0] / err[1], 2.0, 0.1, 0);
+    assert_first_order(se23_imu_increment_forster, &s);
     /* With w parallel to f both agree: J(phi) f = f and H(phi) f = f/2. */
     for (int i = 0; i < 3; ++i) {
         s.f_b.v[i] = SE23_R(3) * s.w_ib_b.v[i];
     }
     assert_int_equal(se23_imu_increment(&s, &u), SE23_OK);
-    assert_int_equal(se23_imu_increment_euler(&s, &e), SE23_OK);
+    assert_int_equal(se23_imu_increment_forster(&s, &e), SE23_OK);
     assert_true(pose_diff(&u, &e) <= TOL);
+}
+
+static void test_imu_increment_paper_is_forster_without_position(void **state)
+{
+    (void)state;
+    se23t_rng_t rng;
+    se23t_rng_seed(&rng, 35);
+    se23_imu_sample_t s = random_sample(&rng, 0.5, 0.1);
+    se23_pose_t e, q;
+    assert_int_equal(se23_imu_increment_forster(&s, &e), SE23_OK);
+    assert_int_equal(se23_imu_increment_paper(&s, &q), SE23_OK);
+    /* The same rotation and velocity to the bit; the position is zero
+     * (eq. backtofuture), Forster's minus f dt^2 / 2. */
+    assert_memory_equal(&q.R, &e.R, sizeof q.R);
+    assert_memory_equal(&q.v, &e.v, sizeof q.v);
+    for (int i = 0; i < 3; ++i) {
+        assert_true(q.p.v[i] == SE23_R(0));
+        assert_near((double)e.p.v[i] - q.p.v[i], 0.5 * s.f_b.v[i] * s.dt * s.dt, 0,
+                    4 * SE23T_EPS);
+    }
+    assert_first_order(se23_imu_increment_paper, &s);
+    /* Without rotation, m sub-steps miss exactly f dt^2 / (2 m) in position
+     * (the sum of their v dt / m is f dt^2 (m - 1) / (2 m)) and nothing
+     * else; Forster's sub-steps are exact there. */
+    se23_imu_sample_t still = s;
+    still.w_ib_b = (se23_vec3_t){{0, 0, 0}};
+    se23_pose_t u;
+    assert_int_equal(se23_imu_increment(&still, &u), SE23_OK);
+    double f_max = 0;
+    for (int i = 0; i < 3; ++i) {
+        f_max = fmax(f_max, fabs((double)s.f_b.v[i]));
+    }
+    const double miss = f_max * s.dt * s.dt / (2.0 * 10);
+    assert_near(substeps_error(se23_imu_increment_paper, &still, 10, &u), miss, TOL, TOL);
+    assert_true(substeps_error(se23_imu_increment_forster, &still, 10, &u) <= TOL);
 }
 
 /* Yaw rotation by angle a. */
@@ -520,9 +568,14 @@ static se23_status_t call_increment(const se23_imu_sample_t *s, void *out)
     return se23_imu_increment(s, out);
 }
 
-static se23_status_t call_increment_euler(const se23_imu_sample_t *s, void *out)
+static se23_status_t call_increment_forster(const se23_imu_sample_t *s, void *out)
 {
-    return se23_imu_increment_euler(s, out);
+    return se23_imu_increment_forster(s, out);
+}
+
+static se23_status_t call_increment_paper(const se23_imu_sample_t *s, void *out)
+{
+    return se23_imu_increment_paper(s, out);
 }
 
 static se23_earth_model_t step_model;
@@ -538,7 +591,8 @@ static void test_imu_increment_rejects_bad_samples(void **state)
     (void)state;
     se23_pose_t u;
     check_bad_samples(call_increment, &u, sizeof u, SE23_CFG_DT_MAX);
-    check_bad_samples(call_increment_euler, &u, sizeof u, SE23_CFG_DT_MAX);
+    check_bad_samples(call_increment_forster, &u, sizeof u, SE23_CFG_DT_MAX);
+    check_bad_samples(call_increment_paper, &u, sizeof u, SE23_CFG_DT_MAX);
 }
 
 /* The internal step used by covariance propagation returns the same state
@@ -659,8 +713,10 @@ static void test_imu_null_arguments_return_err_null(void **state)
     assert_int_equal(se23_earth_model_init(&g, &g, SE23_R(0.01), SE23_R(0.01), &m), SE23_OK);
     assert_int_equal(se23_imu_increment(NULL, &T), SE23_ERR_NULL);
     assert_int_equal(se23_imu_increment(&s, NULL), SE23_ERR_NULL);
-    assert_int_equal(se23_imu_increment_euler(NULL, &T), SE23_ERR_NULL);
-    assert_int_equal(se23_imu_increment_euler(&s, NULL), SE23_ERR_NULL);
+    assert_int_equal(se23_imu_increment_forster(NULL, &T), SE23_ERR_NULL);
+    assert_int_equal(se23_imu_increment_forster(&s, NULL), SE23_ERR_NULL);
+    assert_int_equal(se23_imu_increment_paper(NULL, &T), SE23_ERR_NULL);
+    assert_int_equal(se23_imu_increment_paper(&s, NULL), SE23_ERR_NULL);
     assert_int_equal(se23_imu_step(NULL, &T, &s, &T), SE23_ERR_NULL);
     assert_int_equal(se23_imu_step(&m, NULL, &s, &T), SE23_ERR_NULL);
     assert_int_equal(se23_imu_step(&m, &T, NULL, &T), SE23_ERR_NULL);
@@ -677,7 +733,8 @@ int main(void)
         cmocka_unit_test(test_imu_increment_matches_so3_series),
         cmocka_unit_test(test_imu_increment_composes_over_split_interval),
         cmocka_unit_test(test_imu_increment_solves_ode_in_dt),
-        cmocka_unit_test(test_imu_increment_euler_is_first_order),
+        cmocka_unit_test(test_imu_increment_forster_is_first_order),
+        cmocka_unit_test(test_imu_increment_paper_is_forster_without_position),
         cmocka_unit_test(test_imu_step_flat_circle_is_exact),
         cmocka_unit_test(test_imu_step_rotating_earth_keeps_body_at_rest),
         cmocka_unit_test(test_imu_transition_null_gamma_is_identity),

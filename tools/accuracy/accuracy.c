@@ -2,8 +2,11 @@
  * precision, linked with that build of the library): position and velocity
  * errors after 60 s and 1 h against a long-double truth, for a MEMS-grade
  * and a navigation-grade scenario with the Earth rate, with the exact
- * increment (se23_imu_step) and with the paper's Euler increment on the same
- * samples. Prints markdown table rows; `accuracy header` prints the header
+ * increment (se23_imu_step) and with three first-order increments on the
+ * same samples: Forster et al.'s (se23_imu_increment_forster, f dt^2/2, the
+ * paper's remark after eq. discrete2 with its 1/2 restored), that remark as
+ * printed (f dt^2) and the paper's eq. backtofuture (se23_imu_increment_paper,
+ * position 0). Prints markdown table rows; `accuracy header` prints the header
  * first. Run both builds with `make accuracy` (tools/accuracy/accuracy.mk).
  *
  * Every run sees the same samples, rounded to the build's precision, and the
@@ -26,10 +29,12 @@
 /* The propagations compared with the truth. FACTORS applies the samples
  * through preintegrated factors of FACTOR_HZ^-1 s (se23_preint_add, then
  * se23_preint_predict_carried on the state), the float remedy of the README. */
-enum { EXACT, FACTORS, EULER, EULER_PRINTED, SENSOR_FREE, N_RUNS };
+enum { EXACT, FACTORS, FORSTER, REMARK_PRINTED, PAPER, SENSOR_FREE, N_RUNS };
 static const char *const run_name[N_RUNS] = {
     "exact (se23_imu_step)", "exact, through 0.25 s factors (se23_preint)",
-    "Euler, paper's remark (1/2 restored)", "Euler as printed (dt^2 f, no 1/2)",
+    "Forster et al., f dt^2/2 (se23_imu_increment_forster)",
+    "paper's remark as printed, f dt^2 (no 1/2)",
+    "paper's eq. backtofuture, position 0 (se23_imu_increment_paper)",
     "exact, error-free samples"};
 #define FACTOR_HZ 4
 
@@ -85,16 +90,19 @@ static void compare(const se23_earth_model_t *m, const se23_pose_t *Tc, const ac
     e->att[at] = (double)sqrtl(a0 * a0 + a1 * a1 + a2 * a2);
 }
 
-/* One Euler step (the paper's increment, printed form if `printed`). */
-static void euler_step(const se23_earth_model_t *m, const se23_imu_sample_t *s, int printed,
-                       se23_pose_t *Tc)
+/* One step of the first-order increment of run r (FORSTER, REMARK_PRINTED
+ * or PAPER): the remark as printed is Forster's increment with the position
+ * doubled. */
+static void first_order_step(const se23_earth_model_t *m, const se23_imu_sample_t *s, int r,
+                             se23_pose_t *Tc)
 {
     se23_pose_t u;
-    const se23_status_t st = se23_imu_increment_euler(s, &u);
+    const se23_status_t st =
+        r == PAPER ? se23_imu_increment_paper(s, &u) : se23_imu_increment_forster(s, &u);
     if (st != SE23_OK) {
-        die("se23_imu_increment_euler", st);
+        die(run_name[r], st);
     }
-    if (printed) {
+    if (r == REMARK_PRINTED) {
         for (int i = 0; i < 3; ++i) {
             u.p.v[i] *= SE23_R(2);
         }
@@ -160,8 +168,9 @@ static void run_scenario(const acc_grade_t *gr, errors_t err[N_RUNS], double *p_
             (st = se23_imu_step(&m, &Tc[SENSOR_FREE], &s_free, &Tc[SENSOR_FREE])) != SE23_OK) {
             die("se23_imu_step", st);
         }
-        euler_step(&m, &s, 0, &Tc[EULER]);
-        euler_step(&m, &s, 1, &Tc[EULER_PRINTED]);
+        for (int r = FORSTER; r <= PAPER; ++r) {
+            first_order_step(&m, &s, r, &Tc[r]);
+        }
         if ((st = se23_preint_add(&factor, &s)) != SE23_OK) {
             die("se23_preint_add", st);
         }

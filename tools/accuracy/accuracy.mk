@@ -1,7 +1,8 @@
 # make accuracy: position/velocity errors of the float and double builds
 # after 60 s and 1 h against a long-double truth, MEMS-grade and
-# navigation-grade scenarios with the Earth rate, exact vs the paper's Euler
-# increment (README "IMU propagation and preintegration"). Included by the
+# navigation-grade scenarios with the Earth rate, exact vs three first-order
+# increments: Forster et al.'s, the paper's remark as printed and the paper's
+# eq. backtofuture (README "IMU propagation and preintegration"). Included by the
 # top-level Makefile; takes about 15 s.
 .PHONY: accuracy
 ACC_SRCS := tools/accuracy/accuracy.c tools/accuracy/scenario.c tools/accuracy/truth.c

@@ -9,17 +9,22 @@
  * increment model as its Deltas):
  *   ROW_FORSTER        Forster et al. 2017 as a pipeline: Deltas of their
  *                      discrete model (exp(w dt), f dt, f dt^2/2,
- *                      se23_imu_increment_euler), their Jacobians, scored
+ *                      se23_imu_increment_forster), their Jacobians, scored
  *                      against re-integration with that model
  *   ROW_FORSTER_EXACT  Forster et al.'s Jacobians applied to the exact
  *                      Deltas (se23_preint_unc_correct_classic as is)
  *   ROW_BASIC          Delta exp(J db), J with the paper's B_k = dt I_{9,6}:
  *                      the paper's "Proposed"
+ *   ROW_PAPER          the paper's method on its own increment: Deltas of
+ *                      eq. backtofuture (exp(w dt), f dt, 0,
+ *                      se23_imu_increment_paper), J with B_k = dt I_{9,6}
+ *                      and F_k of those increments, scored against
+ *                      re-integration with that increment
  *   ROW_EXACT          Delta exp(J db), J with the exact B_k: se23 beyond
  *                      the paper
  *   ROW_NONE           the exact Deltas uncorrected
- * The exponential rows and ROW_NONE use the exact increment
- * (se23_imu_increment) for the Deltas and the re-integration.
+ * ROW_FORSTER_EXACT, ROW_BASIC, ROW_EXACT and ROW_NONE use the exact
+ * increment (se23_imu_increment) for the Deltas and the re-integration.
  */
 #ifndef PAPER_ROWS_H
 #define PAPER_ROWS_H
@@ -27,7 +32,7 @@
 #include "se23/preint.h"
 #include "se23/preint_unc.h"
 
-enum { ROW_FORSTER, ROW_FORSTER_EXACT, ROW_BASIC, ROW_EXACT, ROW_NONE, N_ROWS };
+enum { ROW_FORSTER, ROW_FORSTER_EXACT, ROW_BASIC, ROW_PAPER, ROW_EXACT, ROW_NONE, N_ROWS };
 
 /** Sums of squared velocity and position errors over n corrections. */
 typedef struct {
@@ -49,7 +54,9 @@ typedef struct {
     double dt;              /**< sample period [s] */
     se23_preint_unc_t ex;   /**< exact Deltas, J with the exact B_k, classical Jacobians */
     se23_preint_unc_t ba;   /**< exact Deltas, J with the basic B_k */
-    se23_preint_t eu;       /**< Deltas of Forster et al.'s discrete model */
+    se23_preint_t forster;  /**< Deltas of Forster et al.'s discrete model */
+    se23_preint_t paper;    /**< Deltas of the paper's eq. backtofuture */
+    se23_mat9x6_t paper_J;  /**< their bias Jacobian, B_k = dt I_{9,6} */
 } factor_t;
 
 /** fa = the factor of the n samples wf (kept by pointer) of period dt. */

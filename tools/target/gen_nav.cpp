@@ -268,17 +268,23 @@ void add_nav(Gens &g)
                                    if (st == SE23_OK) put_pose(out, upsilon_expm(s.w, s.f, s.dt));
                                    return st;
                                }};
-    g["se23_imu_increment_euler"] = {
-        7, increment_input, [increment_status](const Ctx &, const Row &in, Row &out) {
+    // (exp(w dt), dt f, pos_coeff dt^2 f): Forster et al.'s model (1/2) and
+    // the paper's eq. backtofuture (0).
+    const auto first_order = [increment_input, increment_status](LD pos_coeff) {
+        const auto expect = [increment_status, pos_coeff](const Ctx &, const Row &in, Row &out) {
             const int st = increment_status(in);
             Rd rd{in};
             const Sample s = read_sample(rd);
             if (st == SE23_OK) {
                 put_pose(out, pose5(so3_exp(Vec3L(s.w * s.dt)), Vec3L(s.dt * s.f),
-                                    Vec3L(s.dt * s.dt / 2 * s.f)));
+                                    Vec3L(pos_coeff * s.dt * s.dt * s.f)));
             }
             return st;
-        }};
+        };
+        return Gen{7, increment_input, expect};
+    };
+    g["se23_imu_increment_forster"] = first_order(LD(0.5));
+    g["se23_imu_increment_paper"] = first_order(LD(0));
     g["se23_imu_transition"] = {0,
                                 [](Ctx &c, int k) {
                                     const Sample s = sample_any(c);
@@ -442,10 +448,10 @@ void add_nav(Gens &g)
     };
     g["se23_preint_predict"] = predict(0);
     g["se23_preint_predict_carried"] = predict(1);
-    for (const char *n : {"se23_earth_gamma", "se23_imu_increment", "se23_imu_increment_euler",
-                          "se23_imu_transition", "se23_imu_step", "se23_imu_carried_from_user",
-                          "se23_imu_user_from_carried", "se23_preint_predict",
-                          "se23_preint_predict_carried"}) {
+    for (const char *n : {"se23_earth_gamma", "se23_imu_increment", "se23_imu_increment_forster",
+                          "se23_imu_increment_paper", "se23_imu_transition", "se23_imu_step",
+                          "se23_imu_carried_from_user", "se23_imu_user_from_carried",
+                          "se23_preint_predict", "se23_preint_predict_carried"}) {
         g[n].scale = scale_pose();
     }
     g["se23_earth_model_init"].scale = scale_model();
