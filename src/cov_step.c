@@ -24,8 +24,6 @@
  * 880 / 1930 in all. */
 #include "cov_step.h"
 
-#include <string.h>
-
 #include "linalg.h"
 
 enum { PHI = 0, NU = 1, RHO = 2, GYR = 0, ACC = 1 };
@@ -34,7 +32,9 @@ enum { PHI = 0, NU = 1, RHO = 2, GYR = 0, ACC = 1 };
 static void blk_load(const se23_real_t *P, int stride, int r0, int c0,
                      se23_mat3_t *A)
 {
-    const se23_real_t *a = &P[stride * r0 + c0], *b = a + stride, *c = b + stride;
+    const se23_real_t *a = &P[stride * r0 + c0];
+    const se23_real_t *b = &P[stride * (r0 + 1) + c0];
+    const se23_real_t *c = &P[stride * (r0 + 2) + c0];
     A->m[0][0] = a[0];
     A->m[0][1] = a[1];
     A->m[0][2] = a[2];
@@ -46,11 +46,13 @@ static void blk_load(const se23_real_t *P, int stride, int r0, int c0,
     A->m[2][2] = c[2];
 }
 
-/* Block (r0, c0) of P = A; with mirror != 0 also block (c0, r0) = A^T. */
+/* Block (r0, c0) of P = A. */
 static void blk_store(se23_real_t *P, int stride, int r0, int c0,
-                      const se23_mat3_t *A, int mirror)
+                      const se23_mat3_t *A)
 {
-    se23_real_t *a = &P[stride * r0 + c0], *b = a + stride, *c = b + stride;
+    se23_real_t *a = &P[stride * r0 + c0];
+    se23_real_t *b = &P[stride * (r0 + 1) + c0];
+    se23_real_t *c = &P[stride * (r0 + 2) + c0];
     a[0] = A->m[0][0];
     a[1] = A->m[0][1];
     a[2] = A->m[0][2];
@@ -60,32 +62,33 @@ static void blk_store(se23_real_t *P, int stride, int r0, int c0,
     c[0] = A->m[2][0];
     c[1] = A->m[2][1];
     c[2] = A->m[2][2];
-    if (mirror) {
-        a = &P[stride * c0 + r0];
-        b = a + stride;
-        c = b + stride;
-        a[0] = A->m[0][0];
-        a[1] = A->m[1][0];
-        a[2] = A->m[2][0];
-        b[0] = A->m[0][1];
-        b[1] = A->m[1][1];
-        b[2] = A->m[2][1];
-        c[0] = A->m[0][2];
-        c[1] = A->m[1][2];
-        c[2] = A->m[2][2];
-    }
+}
+
+/* Block (r0, c0) = A and its mirror, block (c0, r0) = A^T (r0 != c0). */
+static void blk_store_pair(se23_real_t *P, int stride, int r0, int c0,
+                           const se23_mat3_t *A)
+{
+    se23_mat3_t T;
+    blk_store(P, stride, r0, c0, A);
+    se23_m3_transpose(A, &T);
+    blk_store(P, stride, c0, r0, &T);
 }
 
 /* Diagonal block at r0 = the upper triangle of A, mirrored. */
 static void blk_store_sym(se23_real_t *P, int stride, int r0,
                           const se23_mat3_t *A)
 {
-    se23_real_t *a = &P[stride * r0 + r0], *b = a + stride, *c = b + stride;
+    se23_real_t *a = &P[stride * r0 + r0];
+    se23_real_t *b = &P[stride * (r0 + 1) + r0];
+    se23_real_t *c = &P[stride * (r0 + 2) + r0];
     a[0] = A->m[0][0];
-    a[1] = b[0] = A->m[0][1];
-    a[2] = c[0] = A->m[0][2];
+    a[1] = A->m[0][1];
+    b[0] = A->m[0][1];
+    a[2] = A->m[0][2];
+    c[0] = A->m[0][2];
     b[1] = A->m[1][1];
-    b[2] = c[1] = A->m[1][2];
+    b[2] = A->m[1][2];
+    c[1] = A->m[1][2];
     c[2] = A->m[2][2];
 }
 
@@ -95,8 +98,8 @@ typedef struct {
     se23_real_t dt;
     const se23_input_blocks_t *Bt;
     const se23_step_noise_t *q;
-    int bias;                /* nonzero for 15 states */
-    se23_input_blocks_t Y;   /* G C (bias states only) */
+    int bias;                /* 1 for 15 states, 0 for 9 */
+    se23_input_blocks_t *Y;  /* G C (bias states only) */
     const se23_real_t *P;    /* P, upper triangle read */
     se23_real_t *out;        /* P+, may alias P */
     int stride;
@@ -107,14 +110,14 @@ typedef struct {
 static void acc_input_terms(const step_t *s, int i, int j, se23_mat3_t *E)
 {
     for (int k = GYR; k <= ACC; ++k) {
-        if (s->bias && !(j == PHI && k == ACC)) {
-            se23_m3_acc_mul_nt(E, &s->Y.blk[i][k], &s->Bt->blk[j][k]);
+        if ((s->bias != 0) && !((j == PHI) && (k == ACC))) {
+            se23_m3_acc_mul_nt(E, &s->Y->blk[i][k], &s->Bt->blk[j][k]);
         }
         if (i == PHI && k == ACC) {
             continue;
         }
         se23_mat3_t Zq; /* Z_jk + q_k Bt_jk, Z = 0 without bias states */
-        if (s->bias) {
+        if (s->bias != 0) {
             blk_load(s->out, s->stride, 3 * j, 9 + 3 * k, &Zq);
             se23_m3_axpy(&Zq, k == GYR ? s->q->qg : s->q->qa, &s->Bt->blk[j][k], &Zq);
         } else {
@@ -125,14 +128,14 @@ static void acc_input_terms(const step_t *s, int i, int j, se23_mat3_t *E)
 }
 
 /* Pose block (i, j) of P+ from its pre-rotation value A_ij. */
-static void finish_pose_block(const step_t *s, int i, int j, se23_mat3_t *Aij)
+static void finish_pose_block(step_t *s, int i, int j, se23_mat3_t *Aij)
 {
     acc_input_terms(s, i, j, Aij);
     se23_m3_congruence_tn(&s->U->R, Aij, i == j, Aij);
     if (i == j) {
         blk_store_sym(s->out, s->stride, 3 * i, Aij);
     } else {
-        blk_store(s->out, s->stride, 3 * i, 3 * j, Aij, 1);
+        blk_store_pair(s->out, s->stride, 3 * i, 3 * j, Aij);
     }
 }
 
@@ -143,8 +146,8 @@ static void bias_cross_terms(step_t *s)
     const se23_vec3_t *v = &s->U->v, *p = &s->U->p;
     for (int k = GYR; k <= ACC; ++k) {
         se23_mat3_t c1;
-        se23_mat3_t *Y0 = &s->Y.blk[PHI][k], *Y1 = &s->Y.blk[NU][k],
-                    *Y2 = &s->Y.blk[RHO][k];
+        se23_mat3_t *Y0 = &s->Y->blk[PHI][k], *Y1 = &s->Y->blk[NU][k],
+                    *Y2 = &s->Y->blk[RHO][k];
         blk_load(s->P, s->stride, 0, 9 + 3 * k, Y0);
         blk_load(s->P, s->stride, 3, 9 + 3 * k, &c1);
         blk_load(s->P, s->stride, 6, 9 + 3 * k, Y2);
@@ -160,18 +163,18 @@ static void bias_cross_terms(step_t *s)
     se23_m3_transpose(&Bb[GYR][ACC], &Bb[ACC][GYR]);
     for (int i = PHI; i <= RHO; ++i) {
         for (int k = GYR; k <= ACC; ++k) {
-            se23_mat3_t Z = s->Y.blk[i][k];
+            se23_mat3_t Z = s->Y->blk[i][k];
             se23_m3_acc_mul(&Z, &s->Bt->blk[i][GYR], &Bb[GYR][k]);
             if (i != PHI) {
                 se23_m3_acc_mul(&Z, &s->Bt->blk[i][ACC], &Bb[ACC][k]);
             }
-            blk_store(s->out, s->stride, 3 * i, 9 + 3 * k, &Z, 0);
+            blk_store(s->out, s->stride, 3 * i, 9 + 3 * k, &Z);
         }
     }
 }
 
 /* The pose blocks, in the in-place order of the file comment. */
-static void pose_blocks(const step_t *s)
+static void pose_blocks(step_t *s)
 {
     const se23_vec3_t *v = &s->U->v, *p = &s->U->p;
     const se23_real_t dt = s->dt;
@@ -225,7 +228,7 @@ static void pose_blocks(const step_t *s)
 }
 
 /* Cross blocks D Z and bias block Bb + W (n = 15, last step). */
-static void bias_blocks(const step_t *s)
+static void bias_blocks(step_t *s)
 {
     const int st = s->stride;
     for (int i = PHI; i <= RHO; ++i) {
@@ -233,7 +236,7 @@ static void bias_blocks(const step_t *s)
             se23_mat3_t Z, out;
             blk_load(s->out, st, 3 * i, 9 + 3 * k, &Z);
             se23_m3_mul_tn(&s->U->R, &Z, &out);
-            blk_store(s->out, st, 3 * i, 9 + 3 * k, &out, 1);
+            blk_store_pair(s->out, st, 3 * i, 9 + 3 * k, &out);
         }
     }
     for (int r = 9; r < 15; ++r) {
@@ -268,20 +271,25 @@ void se23_cov_step(const se23_pose_t *U, se23_real_t dt,
                    const se23_input_blocks_t *Bt, const se23_step_noise_t *q,
                    int n, const se23_real_t *P, se23_real_t *out, int stride)
 {
+    se23_input_blocks_t Y;
     step_t s;
     s.U = U;
     s.dt = dt;
     s.Bt = Bt;
     s.q = q;
-    s.bias = (n == SE23_GAUSS_N_BIAS);
+    s.bias = 0;
+    if (n == SE23_GAUSS_N_BIAS) {
+        s.bias = 1;
+    }
+    s.Y = &Y;
     s.P = P;
     s.out = out;
     s.stride = stride;
-    if (s.bias) {
+    if (s.bias != 0) {
         bias_cross_terms(&s);
     }
     pose_blocks(&s);
-    if (s.bias) {
+    if (s.bias != 0) {
         bias_blocks(&s);
     }
 }
@@ -301,7 +309,10 @@ static void blk_load_sym(const se23_real_t *P, int stride, int a, int b,
 void se23_cov_nu_shear(const se23_vec3_t *a, int n, const se23_real_t *P,
                        se23_real_t *out, int stride)
 {
-    const int nb = (n == SE23_GAUSS_N_BIAS) ? 5 : 3; /* 3x3 blocks per row */
+    int nb = 3; /* 3x3 blocks per row */
+    if (n == SE23_GAUSS_N_BIAS) {
+        nb = 5;
+    }
     se23_mat3_t Rj[SE23_GAUSS_NMAX / 3], X;
     /* R_j = X_nu,j + a^ X_rho,j from the old blocks: row nu of M P. */
     for (int j = 0; j < nb; ++j) {
@@ -324,7 +335,7 @@ void se23_cov_nu_shear(const se23_vec3_t *a, int n, const se23_real_t *P,
         if (j == NU) {
             blk_store_sym(out, stride, 3 * NU, &Rj[NU]);
         } else {
-            blk_store(out, stride, 3 * NU, 3 * j, &Rj[j], 1);
+            blk_store_pair(out, stride, 3 * NU, 3 * j, &Rj[j]);
         }
     }
 }
@@ -346,7 +357,7 @@ void se23_cov_jac_step(const se23_pose_t *U, se23_real_t dt,
             se23_mat3_t t;
             se23_m3_axpy(rows[i], SE23_R(1), &Bt->blk[i][k], &t);
             se23_m3_mul_tn(&U->R, &t, &out);
-            blk_store(J->m, 6, 3 * i, 3 * k, &out, 0);
+            blk_store(J->m, 6, 3 * i, 3 * k, &out);
         }
     }
 }
@@ -354,26 +365,26 @@ void se23_cov_jac_step(const se23_pose_t *U, se23_real_t dt,
 void se23_input_blocks_rotate(const se23_mat3_t *R,
                               const se23_input_blocks_t *Bt, se23_mat9x6_t *B)
 {
-    se23_mat9x6_t out;
     for (int i = PHI; i <= RHO; ++i) {
         for (int k = GYR; k <= ACC; ++k) {
             se23_mat3_t b;
             se23_m3_mul_tn(R, &Bt->blk[i][k], &b);
-            blk_store(out.m, 6, 3 * i, 3 * k, &b, 0);
+            blk_store(B->m, 6, 3 * i, 3 * k, &b);
         }
     }
-    *B = out;
 }
 
 int se23_input_blocks_from(const se23_mat3_t *R, const se23_mat9x6_t *B,
                            se23_input_blocks_t *Bt)
 {
-    se23_mat3_t b;
-    blk_load(B->m, 6, 0, 3, &b);
-    const se23_mat3_t zero = {{{SE23_R(0)}}};
-    if (memcmp(&b, &zero, sizeof b) != 0) {
-        return 0;
+    for (int r = 0; r < 3; ++r) {
+        for (int c = 3; c < 6; ++c) {
+            if (B->m[6 * r + c] != SE23_R(0)) {
+                return 0;
+            }
+        }
     }
+    se23_mat3_t b;
     for (int i = PHI; i <= RHO; ++i) {
         for (int k = GYR; k <= ACC; ++k) {
             blk_load(B->m, 6, 3 * i, 3 * k, &b);

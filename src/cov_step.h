@@ -81,7 +81,7 @@ void se23_cov_jac_step(const se23_pose_t *U, se23_real_t dt,
  *   BASIC: diag(R, R, R) dt I_{9,6} = [[dt R, 0], [0, dt R], [0, 0]].
  */
 void se23_input_blocks(se23_input_jac_kind_t kind,
-                       const se23_increment_parts_t *parts, const se23_mat3_t *R,
+                       const se23_increment_parts_t *q, const se23_mat3_t *R,
                        const se23_vec3_t *f, se23_real_t dt,
                        se23_input_blocks_t *Bt);
 

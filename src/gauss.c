@@ -157,7 +157,7 @@ se23_status_t se23_gauss_cov_propagate(const se23_mat9_t *Sg,
      * local: S_next may alias S or Q. */
     static const se23_input_blocks_t no_input; /* zero */
     static const se23_step_noise_t no_noise;
-    se23_mat9_t P;
+    se23_mat9_t P = {{SE23_R(0)}};
     se23_cov_step(U, dt, &no_input, &no_noise, SE23_GAUSS_N_POSE, Sg->m, P.m, 9);
     for (int i = 0; i < 9; ++i) {
         for (int j = i; j < 9; ++j) {

@@ -100,7 +100,10 @@ static void deriv_coeffs(se23_real_t t, deriv_coeffs_t *d)
     if (t < DERIV_TAYLOR_MAX) {
         /* Small angles: the first omitted term is below 3e-17 (double) or
          * 3e-9 (float) relative, as for the series of so3_series.h. */
-        const int n = (t < SE23_SERIES_SMALL_THETA) ? SE23_SERIES_SMALL_TERMS : DERIV_TERMS;
+        int n = DERIV_TERMS;
+        if (t < SE23_SERIES_SMALL_THETA) {
+            n = SE23_SERIES_SMALL_TERMS;
+        }
         d->d2 = horner(d2_taylor, n, t2);
         d->d3 = horner(d3_taylor, n, t2);
         d->d4 = horner(d4_taylor, n, t2);
@@ -193,7 +196,10 @@ se23_status_t se23_gauss_input_jac(se23_input_jac_kind_t kind,
         *B = out;
         return SE23_OK;
     }
-    const se23_imu_sample_t s = {*w_b, *f_b, dt};
+    se23_imu_sample_t s;
+    s.w_ib_b = *w_b;
+    s.f_b = *f_b;
+    s.dt = dt;
     se23_pose_t U;
     se23_increment_parts_t q;
     se23_input_blocks_t Bt;

@@ -204,79 +204,72 @@ void se23_m3_series(se23_real_t a0, se23_real_t a1, se23_real_t a2,
     out->m[2][1] = a2 * y * z + a1 * x;
 }
 
-/* The accumulating kernels: restrict lets every operand be loaded once,
- * and c + a0 b0 + a1 b1 + a2 b2, left to right, is three fused
+/* The accumulating kernels load every operand once into locals before
+ * the first store (so C may not alias A or B, and nothing is reloaded),
+ * and sum c + a0 b0 + a1 b1 + a2 b2 left to right: three fused
  * multiply-adds where the target has them. */
-#define ACC_DOT(c, a0, b0, a1, b1, a2, b2) ((c) = (c) + (a0) * (b0) + (a1) * (b1) + (a2) * (b2))
 
-/* One row i of C += A B (t = 0) or C += A B^T (t = 1), written out. */
-#define ACC_ROW(C, A, B, i, t)                                                 \
-    do {                                                                       \
-        const se23_real_t a0_ = (A)->m[i][0], a1_ = (A)->m[i][1],             \
-                          a2_ = (A)->m[i][2];                                  \
-        ACC_DOT((C)->m[i][0], a0_, (t) ? (B)->m[0][0] : (B)->m[0][0], a1_,      \
-                (t) ? (B)->m[0][1] : (B)->m[1][0], a2_,                        \
-                (t) ? (B)->m[0][2] : (B)->m[2][0]);                            \
-        ACC_DOT((C)->m[i][1], a0_, (t) ? (B)->m[1][0] : (B)->m[0][1], a1_,      \
-                (t) ? (B)->m[1][1] : (B)->m[1][1], a2_,                        \
-                (t) ? (B)->m[1][2] : (B)->m[2][1]);                            \
-        ACC_DOT((C)->m[i][2], a0_, (t) ? (B)->m[2][0] : (B)->m[0][2], a1_,      \
-                (t) ? (B)->m[2][1] : (B)->m[1][2], a2_,                        \
-                (t) ? (B)->m[2][2] : (B)->m[2][2]);                            \
-    } while (0)
-
-void se23_m3_acc_mul(se23_mat3_t *restrict C, const se23_mat3_t *restrict A,
-                     const se23_mat3_t *restrict B)
+void se23_m3_acc_mul(se23_mat3_t *C, const se23_mat3_t *A, const se23_mat3_t *B)
 {
-    ACC_ROW(C, A, B, 0, 0);
-    ACC_ROW(C, A, B, 1, 0);
-    ACC_ROW(C, A, B, 2, 0);
+    const se23_mat3_t a = *A;
+    const se23_mat3_t b = *B;
+    C->m[0][0] = C->m[0][0] + a.m[0][0] * b.m[0][0] + a.m[0][1] * b.m[1][0] + a.m[0][2] * b.m[2][0];
+    C->m[0][1] = C->m[0][1] + a.m[0][0] * b.m[0][1] + a.m[0][1] * b.m[1][1] + a.m[0][2] * b.m[2][1];
+    C->m[0][2] = C->m[0][2] + a.m[0][0] * b.m[0][2] + a.m[0][1] * b.m[1][2] + a.m[0][2] * b.m[2][2];
+    C->m[1][0] = C->m[1][0] + a.m[1][0] * b.m[0][0] + a.m[1][1] * b.m[1][0] + a.m[1][2] * b.m[2][0];
+    C->m[1][1] = C->m[1][1] + a.m[1][0] * b.m[0][1] + a.m[1][1] * b.m[1][1] + a.m[1][2] * b.m[2][1];
+    C->m[1][2] = C->m[1][2] + a.m[1][0] * b.m[0][2] + a.m[1][1] * b.m[1][2] + a.m[1][2] * b.m[2][2];
+    C->m[2][0] = C->m[2][0] + a.m[2][0] * b.m[0][0] + a.m[2][1] * b.m[1][0] + a.m[2][2] * b.m[2][0];
+    C->m[2][1] = C->m[2][1] + a.m[2][0] * b.m[0][1] + a.m[2][1] * b.m[1][1] + a.m[2][2] * b.m[2][1];
+    C->m[2][2] = C->m[2][2] + a.m[2][0] * b.m[0][2] + a.m[2][1] * b.m[1][2] + a.m[2][2] * b.m[2][2];
 }
 
-void se23_m3_acc_mul_nt(se23_mat3_t *restrict C, const se23_mat3_t *restrict A,
-                        const se23_mat3_t *restrict B)
+void se23_m3_acc_mul_nt(se23_mat3_t *C, const se23_mat3_t *A, const se23_mat3_t *B)
 {
-    ACC_ROW(C, A, B, 0, 1);
-    ACC_ROW(C, A, B, 1, 1);
-    ACC_ROW(C, A, B, 2, 1);
+    const se23_mat3_t a = *A;
+    const se23_mat3_t b = *B;
+    C->m[0][0] = C->m[0][0] + a.m[0][0] * b.m[0][0] + a.m[0][1] * b.m[0][1] + a.m[0][2] * b.m[0][2];
+    C->m[0][1] = C->m[0][1] + a.m[0][0] * b.m[1][0] + a.m[0][1] * b.m[1][1] + a.m[0][2] * b.m[1][2];
+    C->m[0][2] = C->m[0][2] + a.m[0][0] * b.m[2][0] + a.m[0][1] * b.m[2][1] + a.m[0][2] * b.m[2][2];
+    C->m[1][0] = C->m[1][0] + a.m[1][0] * b.m[0][0] + a.m[1][1] * b.m[0][1] + a.m[1][2] * b.m[0][2];
+    C->m[1][1] = C->m[1][1] + a.m[1][0] * b.m[1][0] + a.m[1][1] * b.m[1][1] + a.m[1][2] * b.m[1][2];
+    C->m[1][2] = C->m[1][2] + a.m[1][0] * b.m[2][0] + a.m[1][1] * b.m[2][1] + a.m[1][2] * b.m[2][2];
+    C->m[2][0] = C->m[2][0] + a.m[2][0] * b.m[0][0] + a.m[2][1] * b.m[0][1] + a.m[2][2] * b.m[0][2];
+    C->m[2][1] = C->m[2][1] + a.m[2][0] * b.m[1][0] + a.m[2][1] * b.m[1][1] + a.m[2][2] * b.m[1][2];
+    C->m[2][2] = C->m[2][2] + a.m[2][0] * b.m[2][0] + a.m[2][1] * b.m[2][1] + a.m[2][2] * b.m[2][2];
 }
 
 /* Column j of v^ A is v x A_j. */
-#define SKEW_MUL_COL(C, A, j, x, y, z)                                         \
-    do {                                                                       \
-        const se23_real_t a0_ = (A)->m[0][j], a1_ = (A)->m[1][j],             \
-                          a2_ = (A)->m[2][j];                                  \
-        (C)->m[0][j] = (C)->m[0][j] + (y) * a2_ - (z) * a1_;                   \
-        (C)->m[1][j] = (C)->m[1][j] + (z) * a0_ - (x) * a2_;                   \
-        (C)->m[2][j] = (C)->m[2][j] + (x) * a1_ - (y) * a0_;                   \
-    } while (0)
-
-void se23_m3_acc_skew_mul(se23_mat3_t *restrict C, se23_real_t s,
-                          const se23_vec3_t *restrict v, const se23_mat3_t *restrict A)
+void se23_m3_acc_skew_mul(se23_mat3_t *C, se23_real_t s, const se23_vec3_t *v,
+                          const se23_mat3_t *A)
 {
     const se23_real_t x = s * v->v[0], y = s * v->v[1], z = s * v->v[2];
-    SKEW_MUL_COL(C, A, 0, x, y, z);
-    SKEW_MUL_COL(C, A, 1, x, y, z);
-    SKEW_MUL_COL(C, A, 2, x, y, z);
+    const se23_mat3_t a = *A;
+    C->m[0][0] = C->m[0][0] + y * a.m[2][0] - z * a.m[1][0];
+    C->m[1][0] = C->m[1][0] + z * a.m[0][0] - x * a.m[2][0];
+    C->m[2][0] = C->m[2][0] + x * a.m[1][0] - y * a.m[0][0];
+    C->m[0][1] = C->m[0][1] + y * a.m[2][1] - z * a.m[1][1];
+    C->m[1][1] = C->m[1][1] + z * a.m[0][1] - x * a.m[2][1];
+    C->m[2][1] = C->m[2][1] + x * a.m[1][1] - y * a.m[0][1];
+    C->m[0][2] = C->m[0][2] + y * a.m[2][2] - z * a.m[1][2];
+    C->m[1][2] = C->m[1][2] + z * a.m[0][2] - x * a.m[2][2];
+    C->m[2][2] = C->m[2][2] + x * a.m[1][2] - y * a.m[0][2];
 }
 
 /* Row i of A v^ is A_i x v. */
-#define MUL_SKEW_ROW(C, A, i, x, y, z)                                         \
-    do {                                                                       \
-        const se23_real_t a0_ = (A)->m[i][0], a1_ = (A)->m[i][1],             \
-                          a2_ = (A)->m[i][2];                                  \
-        (C)->m[i][0] = (C)->m[i][0] + a1_ * (z) - a2_ * (y);                   \
-        (C)->m[i][1] = (C)->m[i][1] + a2_ * (x) - a0_ * (z);                   \
-        (C)->m[i][2] = (C)->m[i][2] + a0_ * (y) - a1_ * (x);                   \
-    } while (0)
-
-void se23_m3_acc_mul_skew(se23_mat3_t *restrict C, const se23_mat3_t *restrict A,
-                          const se23_vec3_t *restrict v)
+void se23_m3_acc_mul_skew(se23_mat3_t *C, const se23_mat3_t *A, const se23_vec3_t *v)
 {
     const se23_real_t x = v->v[0], y = v->v[1], z = v->v[2];
-    MUL_SKEW_ROW(C, A, 0, x, y, z);
-    MUL_SKEW_ROW(C, A, 1, x, y, z);
-    MUL_SKEW_ROW(C, A, 2, x, y, z);
+    const se23_mat3_t a = *A;
+    C->m[0][0] = C->m[0][0] + a.m[0][1] * z - a.m[0][2] * y;
+    C->m[0][1] = C->m[0][1] + a.m[0][2] * x - a.m[0][0] * z;
+    C->m[0][2] = C->m[0][2] + a.m[0][0] * y - a.m[0][1] * x;
+    C->m[1][0] = C->m[1][0] + a.m[1][1] * z - a.m[1][2] * y;
+    C->m[1][1] = C->m[1][1] + a.m[1][2] * x - a.m[1][0] * z;
+    C->m[1][2] = C->m[1][2] + a.m[1][0] * y - a.m[1][1] * x;
+    C->m[2][0] = C->m[2][0] + a.m[2][1] * z - a.m[2][2] * y;
+    C->m[2][1] = C->m[2][1] + a.m[2][2] * x - a.m[2][0] * z;
+    C->m[2][2] = C->m[2][2] + a.m[2][0] * y - a.m[2][1] * x;
 }
 
 void se23_m3_congruence_tn(const se23_mat3_t *R, const se23_mat3_t *A, int sym,

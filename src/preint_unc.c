@@ -127,7 +127,7 @@ se23_status_t se23_preint_unc_add(se23_preint_unc_t *fu,
     se23_input_blocks(fu->kind, &parts, &U.R, &c.f_b, c.dt, &Bt);
     se23_cov_step(&U, c.dt, &Bt, &q, SE23_GAUSS_N_POSE, fu->P.m, fu->P.m, 9);
     se23_cov_jac_step(&U, c.dt, &Bt, &fu->J);
-    if (fu->classic) {
+    if (fu->classic != 0) {
         se23_preint_classic_step(&fu->cl, &fu->f.delta.R, &U.R, &c.w_ib_b,
                                  &c.f_b, c.dt);
     }

@@ -88,8 +88,10 @@ void se23_so3_coeffs(se23_real_t theta, se23_so3_coeffs_t *c)
     const se23_real_t t = theta * theta;
     if (theta < TAYLOR_MAX) {
         /* c_m = sum_k inv_fact[2k + m] (-t)^k */
-        const int n = (theta < SE23_SERIES_SMALL_THETA) ? SE23_SERIES_SMALL_TERMS
-                                                         : SERIES_TERMS;
+        int n = SERIES_TERMS;
+        if (theta < SE23_SERIES_SMALL_THETA) {
+            n = SE23_SERIES_SMALL_TERMS;
+        }
         c->c1 = horner_n(&inv_fact[1], 2, n, -t);
         c->c2 = horner_n(&inv_fact[2], 2, n, -t);
         c->c3 = horner_n(&inv_fact[3], 2, n, -t);

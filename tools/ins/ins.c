@@ -82,7 +82,9 @@ int ins_init(ins_t *ins, const ins_init_t *init)
             user.P.m[SE23_GAUSS_NMAX * i + j] = init->P[15 * i + j];
         }
     }
-    if (se23_gauss_to_carried(&ins->model, &user, &carried) != SE23_OK) {
+    /* The state enters here: checked once (the steps trust it after). */
+    if (se23_gauss_check(&user) != SE23_OK ||
+        se23_gauss_to_carried(&ins->model, &user, &carried) != SE23_OK) {
         ins->c.init_rejected++; /* invalid pose or covariance: state kept */
         return -1;
     }
