@@ -68,10 +68,19 @@ static void blk_store(se23_real_t *P, int stride, int r0, int c0,
 static void blk_store_pair(se23_real_t *P, int stride, int r0, int c0,
                            const se23_mat3_t *A)
 {
-    se23_mat3_t T;
     blk_store(P, stride, r0, c0, A);
-    se23_m3_transpose(A, &T);
-    blk_store(P, stride, c0, r0, &T);
+    se23_real_t *a = &P[stride * c0 + r0];
+    se23_real_t *b = &P[stride * (c0 + 1) + r0];
+    se23_real_t *c = &P[stride * (c0 + 2) + r0];
+    a[0] = A->m[0][0];
+    a[1] = A->m[1][0];
+    a[2] = A->m[2][0];
+    b[0] = A->m[0][1];
+    b[1] = A->m[1][1];
+    b[2] = A->m[2][1];
+    c[0] = A->m[0][2];
+    c[1] = A->m[1][2];
+    c[2] = A->m[2][2];
 }
 
 /* Diagonal block at r0 = the upper triangle of A, mirrored. */
