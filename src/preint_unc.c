@@ -188,6 +188,10 @@ static se23_status_t correct(const se23_preint_unc_t *fu,
         }
         se23_compose(&fu->f.delta, &E, &r.delta);
     }
+    /* The retraction keeps R in SO(3) to rounding, so that an SE23_OK
+     * output is always a valid input (one step: Delta R passed the check,
+     * its drift is at most SE23_CFG_ROT_TOL). */
+    (void)se23_m3_orthonormalize_step(&r.delta.R, SE23_NORMALIZE_DONE, SE23_R(0.1));
     *out = r;
     return SE23_OK;
 }

@@ -21,6 +21,7 @@
 #include "se23/preint.h"
 #include "se23/preint_unc.h"
 #include "se23/se23.h"
+#include "se23/so3.h"
 #include "se23_test.h"
 
 #define SENTINEL 0x5a
@@ -124,6 +125,48 @@ static void test_preint_unc_reset_gives_empty_factor(void **state)
         }
     }
     assert_int_equal(se23_preint_unc_check(&fu), SE23_OK);
+}
+
+/* Regression (issue 12, D2): a Delta R that passes the rotation test at
+ * 0.9 of its tolerance comes back from either correction orthonormal to
+ * rounding, so the corrected Deltas are a valid input again. */
+static double orthogonality(const se23_mat3_t *R)
+{
+    double worst = 0;
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            double s = 0;
+            for (int k = 0; k < 3; ++k) {
+                s += (double)R->m[k][i] * R->m[k][j];
+            }
+            worst = fmax(worst, fabs(s - (i == j ? 1.0 : 0.0)));
+        }
+    }
+    return worst;
+}
+
+static void test_preint_unc_correct_reorthonormalises(void **state)
+{
+    (void)state;
+    se23_preint_unc_t fu;
+    make_factor(30, SE23_INPUT_JAC_EXACT, &NOISE, &fu);
+    /* Column 0 grown, column 1 shrunk by 0.45 tol: R^T R is 0.9 tol off I,
+     * det R 1 - O(tol^2), so the rotation test still passes. */
+    const se23_real_t d = SE23_R(0.45) * SE23_R(SE23_CFG_ROT_TOL);
+    for (int i = 0; i < 3; ++i) {
+        fu.f.delta.R.m[i][0] *= SE23_R(1) + d;
+        fu.f.delta.R.m[i][1] *= SE23_R(1) - d;
+    }
+    assert_int_equal(se23_so3_check(&fu.f.delta.R), SE23_OK);
+    assert_true(orthogonality(&fu.f.delta.R) > 0.8 * SE23_CFG_ROT_TOL);
+    se23_vec3_t bg = fu.b_g, ba = fu.b_a;
+    bg.v[0] += SE23_R(1e-3);
+    ba.v[2] += SE23_R(1e-2);
+    se23_preint_t out;
+    assert_int_equal(se23_preint_unc_correct(&fu, &bg, &ba, &out), SE23_OK);
+    assert_true(orthogonality(&out.delta.R) <= 16 * SE23T_EPS);
+    assert_int_equal(se23_preint_unc_correct_classic(&fu, &bg, &ba, &out), SE23_OK);
+    assert_true(orthogonality(&out.delta.R) <= 16 * SE23T_EPS);
 }
 
 /* The classical Jacobians are opt-in: without them a factor has the same
@@ -618,6 +661,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_preint_unc_reset_gives_empty_factor),
         cmocka_unit_test(test_preint_unc_classic_is_opt_in),
+        cmocka_unit_test(test_preint_unc_correct_reorthonormalises),
         cmocka_unit_test(test_preint_unc_add_deltas_equal_preint_add),
         cmocka_unit_test(test_preint_unc_bias_jacobian_matches_central_differences),
         cmocka_unit_test(test_preint_unc_cov_matches_step_by_step_propagation),
