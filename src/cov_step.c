@@ -24,9 +24,19 @@
  * 880 / 1930 in all. */
 #include "cov_step.h"
 
+#include <float.h>
+
 #include "linalg.h"
+#include "se23_math.h"
 
 enum { PHI = 0, NU = 1, RHO = 2, GYR = 0, ACC = 1 };
+
+/* Entries of P+ below this cannot overflow in the kernel's sums. */
+#if SE23_CFG_DOUBLE
+#define SE23_COV_STEP_MAX (SE23_R(DBL_MAX) / SE23_R(64))
+#else
+#define SE23_COV_STEP_MAX (SE23_R(FLT_MAX) / SE23_R(64))
+#endif
 
 /* A = the 3x3 block of P at rows r0.., columns c0.. */
 static void blk_load(const se23_real_t *P, int stride, int r0, int c0,
@@ -258,6 +268,43 @@ static void bias_blocks(step_t *s)
     }
 }
 
+se23_real_t se23_input_blocks_row_sum(const se23_input_blocks_t *Bt)
+{
+    se23_real_t b = SE23_R(0);
+    for (int i = PHI; i <= RHO; ++i) {
+        for (int r = 0; r < 3; ++r) {
+            se23_real_t x = SE23_R(0);
+            for (int k = GYR; k <= ACC; ++k) {
+                const se23_real_t *row = Bt->blk[i][k].m[r];
+                x += se23_fabs(row[0]) + se23_fabs(row[1]) + se23_fabs(row[2]);
+            }
+            b = (x > b) ? x : b;
+        }
+    }
+    return b;
+}
+
+int se23_cov_step_fits(const se23_pose_t *U, se23_real_t dt, se23_real_t b,
+                       const se23_step_noise_t *q, int n, const se23_real_t *P,
+                       int stride)
+{
+    se23_real_t d = SE23_R(0); /* largest variance (P_ii >= 0, trusted) */
+    for (int i = 0; i < n; ++i) {
+        const se23_real_t x = P[stride * i + i];
+        d = (x > d) ? x : d;
+    }
+    /* Row sums: G's at most 1 + dt + |v|_1 + |p|_1, [G, Bt]'s that plus b,
+     * R^T's at most sqrt(3) < 2; q at most the larger density. */
+    const se23_real_t g = SE23_R(1) + dt + se23_fabs(U->v.v[0]) + se23_fabs(U->v.v[1]) +
+                          se23_fabs(U->v.v[2]) + se23_fabs(U->p.v[0]) +
+                          se23_fabs(U->p.v[1]) + se23_fabs(U->p.v[2]);
+    const se23_real_t r = SE23_R(2) * (g + b) + SE23_R(1);
+    const se23_real_t qm = (q->qg > q->qa) ? q->qg : q->qa;
+    const se23_real_t w = (q->wg > q->wa) ? q->wg : q->wa;
+    const se23_real_t bound = SE23_R(2) * d * r * r + SE23_R(4) * qm * b * b + w;
+    return bound <= SE23_COV_STEP_MAX;
+}
+
 se23_status_t se23_step_noise(const se23_imu_noise_t *nz, se23_real_t dt,
                               se23_step_noise_t *q)
 {
@@ -269,10 +316,16 @@ se23_status_t se23_step_noise(const se23_imu_noise_t *nz, se23_real_t dt,
     if (d[0] < SE23_R(0) || d[1] < SE23_R(0) || d[2] < SE23_R(0) || d[3] < SE23_R(0)) {
         return SE23_ERR_DOMAIN;
     }
-    q->qg = d[0] * d[0] / dt;
-    q->qa = d[1] * d[1] / dt;
-    q->wg = d[2] * d[2] * dt;
-    q->wa = d[3] * d[3] * dt;
+    const se23_real_t qg = d[0] * d[0] / dt, qa = d[1] * d[1] / dt;
+    const se23_real_t wg = d[2] * d[2] * dt, wa = d[3] * d[3] * dt;
+    if (!se23_is_finite(qg) || !se23_is_finite(qa) || !se23_is_finite(wg) ||
+        !se23_is_finite(wa)) {
+        return SE23_ERR_NONFINITE; /* a huge density, or a denormal dt */
+    }
+    q->qg = qg;
+    q->qa = qa;
+    q->wg = wg;
+    q->wa = wa;
     return SE23_OK;
 }
 

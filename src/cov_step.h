@@ -44,11 +44,40 @@ typedef struct {
 /**
  * q = the per-sample noise of the model nz over dt (0 < dt, checked by the
  * caller).
- * @return SE23_ERR_NONFINITE or SE23_ERR_DOMAIN (a negative density);
- *         q is written only on SE23_OK.
+ * @return SE23_ERR_NONFINITE (a density not finite, or a variance that
+ *         overflows: a huge density or a denormal dt), SE23_ERR_DOMAIN (a
+ *         negative density); q is written only on SE23_OK.
  */
 se23_status_t se23_step_noise(const se23_imu_noise_t *nz, se23_real_t dt,
                               se23_step_noise_t *q);
+
+/**
+ * Nonzero if se23_cov_step with these inputs cannot overflow: |P_ij| <= d =
+ * max_i P_ii for a PSD P, so every entry of Phi P Phi^T + Q is at most
+ * 2 d r^2 + 4 q b^2 + w, with r a bound on the absolute row sums of Phi
+ * and b one on those of Bt; the bound must stay 64 times below the largest
+ * real. O(n).
+ * @param b bound on the absolute row sums of Bt: se23_input_blocks_row_sum,
+ *          or for a sample's own Bt se23_input_blocks_bound.
+ */
+int se23_cov_step_fits(const se23_pose_t *U, se23_real_t dt, se23_real_t b,
+                       const se23_step_noise_t *q, int n, const se23_real_t *P,
+                       int stride);
+
+/** The largest absolute row sum of Bt (45 entries). */
+se23_real_t se23_input_blocks_row_sum(const se23_input_blocks_t *Bt);
+
+/**
+ * A bound on the absolute row sums of the Bt of se23_input_blocks from the
+ * sample alone, O(1): ||J||_2 <= 1, ||H||_2 <= 1/2 (normal matrices with
+ * eigenvalues (e^{i t} - 1)/(i t) and (e^{i t} - 1 - i t)/(i t)^2),
+ * ||D_J||_2 <= |f|/2 and ||D_H||_2 <= |f|/6 (J f and H f are averages of
+ * exp(s th^) f over s with weights 1 and 1 - s), and an entry is at most
+ * the spectral norm: a row of Bt sums to at most
+ * 3 dt (2 + dt |f| (1/2 + dt/6 + 1/2)) <= 6 dt (1 + dt |f| (1 + dt)).
+ * |f| is bounded by |f|_1.
+ */
+se23_real_t se23_input_blocks_bound(const se23_vec3_t *f, se23_real_t dt);
 
 /**
  * out = Phi P Phi^T + diag(B_k N B_k^T, W) on the leading n x n blocks

@@ -167,6 +167,9 @@ se23_status_t se23_gauss_cov_propagate(const se23_mat9_t *Sg,
             P.m[9 * j + i] = x;
         }
     }
+    if (!se23_all_finite(P.m, 81)) {
+        return SE23_ERR_NONFINITE; /* S+ overflowed */
+    }
     *S_next = P;
     return SE23_OK;
 }
@@ -232,6 +235,9 @@ se23_status_t se23_gauss_propagate(const se23_gauss_t *g, const se23_pose_t *U,
     if (!se23_input_blocks_from(&U->R, B, &Bt)) {
         return SE23_ERR_DOMAIN;
     }
+    if (!se23_cov_step_fits(U, dt, se23_input_blocks_row_sum(&Bt), &q, g->n, g->P.m, S)) {
+        return SE23_ERR_NONFINITE; /* P+ would overflow */
+    }
     propagate_cov(g, U, &Bt, &q, dt, out);
     return SE23_OK;
 }
@@ -266,17 +272,21 @@ se23_status_t se23_gauss_predict(const se23_earth_model_t *model,
     if (st != SE23_OK) {
         return st;
     }
-    /* The mean goes straight to out->T (nothing fails after the step, and
-     * the covariance step reads only g->P). */
-    se23_pose_t U;
+    se23_pose_t U, T_next;
     se23_increment_parts_t parts;
-    st = se23_imu_step_ups(model, &g->T, &c, &out->T, &U, &parts);
+    st = se23_imu_step_ups(model, &g->T, &c, &T_next, &U, &parts);
     if (st != SE23_OK) {
         return st;
     }
     se23_input_blocks_t Bt;
     se23_input_blocks(kind, &parts, &U.R, &c.f_b, c.dt, &Bt);
+    if (!se23_cov_step_fits(&U, c.dt, se23_input_blocks_bound(&c.f_b, c.dt), &q, g->n,
+                            g->P.m, S)) {
+        return SE23_ERR_NONFINITE; /* P+ would overflow */
+    }
+    /* Nothing fails from here on (the covariance step reads only g->P). */
     se23_cov_step(&U, c.dt, &Bt, &q, g->n, g->P.m, out->P.m, S);
+    out->T = T_next;
     out->b_g = g->b_g;
     out->b_a = g->b_a;
     out->n = g->n;

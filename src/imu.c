@@ -13,6 +13,20 @@
  * epsilons (relative) from model->dt: the difference is then rounding. */
 #define GAMMA_CACHE_ULPS SE23_R(4)
 
+/* Nonzero if every entry of T is finite (x * 0 is NaN for NaN or Inf). */
+static int pose_finite(const se23_pose_t *T)
+{
+    se23_real_t bad = SE23_R(0);
+    for (int i = 0; i < 3; ++i) {
+        bad = se23_fma(T->R.m[i][0], SE23_R(0), bad);
+        bad = se23_fma(T->R.m[i][1], SE23_R(0), bad);
+        bad = se23_fma(T->R.m[i][2], SE23_R(0), bad);
+        bad = se23_fma(T->v.v[i], SE23_R(0), bad);
+        bad = se23_fma(T->p.v[i], SE23_R(0), bad);
+    }
+    return se23_is_finite(bad);
+}
+
 se23_status_t se23_imu_sample_check(const se23_imu_sample_t *s, se23_real_t dt_max)
 {
     if (!se23_all_finite(s->w_ib_b.v, 3) || !se23_all_finite(s->f_b.v, 3) ||
@@ -157,9 +171,15 @@ se23_status_t se23_imu_step_ups(const se23_earth_model_t *model,
         }
         gamma = &gamma_dt;
     }
-    se23_pose_t u;
+    se23_pose_t u, next;
     se23_imu_increment_parts(s, &u, parts);
-    se23_imu_transition(gamma, T, &u, s->dt, T_next);
+    se23_imu_transition(gamma, T, &u, s->dt, &next);
+    /* Finite inputs can still overflow (|f| dt near the largest real, or a
+     * state near it): refuse instead of returning Inf with SE23_OK. */
+    if (!pose_finite(&u) || !pose_finite(&next)) {
+        return SE23_ERR_NONFINITE;
+    }
+    *T_next = next;
     *ups = u;
     return SE23_OK;
 }

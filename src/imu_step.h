@@ -33,7 +33,9 @@ void se23_imu_increment_parts(const se23_imu_sample_t *s, se23_pose_t *ups,
  * se23_imu_step with the pose T trusted (not checked: a state the library
  * produced, or one the caller checked), plus ups = Upsilon(s) and, if parts
  * is not NULL, the increment's parts. The sample is checked as in
- * se23_imu_step; nothing is written on error.
+ * se23_imu_step, and SE23_ERR_NONFINITE is returned if the increment or
+ * T_next would overflow; T_next and ups are written only on SE23_OK (parts
+ * is then scratch).
  */
 se23_status_t se23_imu_step_ups(const se23_earth_model_t *model,
                                 const se23_pose_t *T, const se23_imu_sample_t *s,

@@ -171,6 +171,12 @@ void se23_input_blocks(se23_input_jac_kind_t kind,
     se23_m3_scale(&q->H, dt2, &Bt->blk[2][1]);
 }
 
+se23_real_t se23_input_blocks_bound(const se23_vec3_t *f, se23_real_t dt)
+{
+    const se23_real_t f1 = se23_fabs(f->v[0]) + se23_fabs(f->v[1]) + se23_fabs(f->v[2]);
+    return SE23_R(6) * dt * (SE23_R(1) + dt * f1 * (SE23_R(1) + dt));
+}
+
 se23_status_t se23_gauss_input_jac(se23_input_jac_kind_t kind,
                                    const se23_vec3_t *w_b,
                                    const se23_vec3_t *f_b, se23_real_t dt,

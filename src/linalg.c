@@ -6,12 +6,13 @@
 
 int se23_all_finite(const se23_real_t *x, int n)
 {
+    /* x * 0 is 0 for finite x and NaN for NaN or Inf: one multiply-add per
+     * value and one test at the end. */
+    se23_real_t bad = SE23_R(0);
     for (int i = 0; i < n; ++i) {
-        if (!se23_is_finite(x[i])) {
-            return 0;
-        }
+        bad = se23_fma(x[i], SE23_R(0), bad);
     }
-    return 1;
+    return se23_is_finite(bad);
 }
 
 se23_real_t se23_v3_dot(const se23_vec3_t *a, const se23_vec3_t *b)

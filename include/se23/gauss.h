@@ -185,9 +185,11 @@ se23_status_t se23_gauss_input_noise(const se23_mat9x6_t *B,
  * computed as F_k (F_k S)^T with se23_gauss_fk_apply (rotation blocks and
  * shears, no dense 9x9 product) and made exactly symmetric by mirroring the
  * upper triangle.
+ * S and Q are caller input and fully checked; S_next may alias S or Q.
  * @return SE23_ERR_NONFINITE, SE23_ERR_NOT_SYMMETRIC or SE23_ERR_NOT_PSD
  *         (S or Q, file comment), SE23_ERR_NOT_ROTATION (U),
- *         SE23_ERR_DT (dt <= 0 or > SE23_CFG_DT_MAX).
+ *         SE23_ERR_DT (dt <= 0 or > SE23_CFG_DT_MAX), SE23_ERR_NONFINITE
+ *         if S_next would overflow.
  */
 se23_status_t se23_gauss_cov_propagate(const se23_mat9_t *S,
                                        const se23_pose_t *U, se23_real_t dt,
@@ -231,8 +233,14 @@ se23_status_t se23_gauss_propagate(const se23_gauss_t *g, const se23_pose_t *U,
  * g holds the carried state), covariance by se23_gauss_propagate with the
  * exact increment and the input matrix of the given kind. Biases keep their
  * estimates (random-walk model).
- * @return the statuses of se23_gauss_check, se23_imu_step,
- *         se23_gauss_input_jac and se23_gauss_propagate.
+ * The state g is trusted (types.h, "Validation policy"): only g->n is
+ * checked, unless SE23_CFG_DEEP_CHECKS.
+ * @return SE23_ERR_DIM (n), SE23_ERR_DOMAIN (kind, a negative density),
+ *         the sample statuses of se23_imu_step (SE23_ERR_NONFINITE,
+ *         SE23_ERR_DT), SE23_ERR_NONFINITE also when the mean or P+ would
+ *         overflow (a huge density, a denormal dt, a covariance or a state
+ *         near the largest real: an O(n) bound decides before anything is
+ *         stored).
  */
 se23_status_t se23_gauss_predict(const se23_earth_model_t *model,
                                  const se23_gauss_t *g,

@@ -4,6 +4,7 @@
  * products, the noise model, the carried <-> user conversion (M against
  * central differences), the Monte Carlo NEES of the concentrated Gaussian,
  * and every bad-input path. */
+#include <float.h>
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -621,6 +622,48 @@ static void test_gauss_predict_rejects_bad_input_untouched(void **state)
     assert_memory_equal(&out, &out0, sizeof out);
 }
 
+/* Regression (issue 12, D3): finite inputs whose result would overflow
+ * gave SE23_OK with Inf; now SE23_ERR_NONFINITE, nothing written. */
+static void test_gauss_predict_refuses_overflow_untouched(void **state)
+{
+    (void)state;
+    se23t_rng_t rng;
+    se23t_rng_seed(&rng, 615);
+    se23_earth_model_t model;
+    const se23_vec3_t g_n = {{0, 0, SE23_R(9.81)}}, zero = {{0}};
+    assert_int_equal(se23_earth_model_init(&g_n, &zero, SE23_R(0.01), SE23_R(0.02), &model), SE23_OK);
+    se23_imu_sample_t s = random_sample(&rng, 0.01);
+    se23_gauss_t g, big, out, out0;
+    gt_random_gauss(&rng, 15, &g);
+    memset(&out, SENTINEL, sizeof out);
+    out0 = out;
+#if SE23_CFG_DOUBLE
+    const se23_real_t tiny_dt = 4.9e-324, huge = DBL_MAX / 8;
+#else
+    const se23_real_t tiny_dt = 1.4e-45f, huge = FLT_MAX / 8;
+#endif
+    /* A denormal dt: sigma^2 / dt overflows. */
+    s.dt = tiny_dt;
+    assert_int_equal(se23_gauss_predict(&model, &g, &s, &NOISE, SE23_INPUT_JAC_EXACT, &out), SE23_ERR_NONFINITE);
+    s.dt = SE23_R(0.01);
+    /* A huge noise density. */
+    se23_imu_noise_t nz = NOISE;
+    nz.accel_noise = huge;
+    assert_int_equal(se23_gauss_predict(&model, &g, &s, &nz, SE23_INPUT_JAC_EXACT, &out), SE23_ERR_NONFINITE);
+    /* A covariance so large that P+ overflows. */
+    big = g;
+    for (int i = 0; i < 15; ++i) {
+        big.P.m[S * i + i] = huge;
+    }
+    assert_int_equal(se23_gauss_predict(&model, &big, &s, &NOISE, SE23_INPUT_JAC_EXACT, &out), SE23_ERR_NONFINITE);
+    /* A state so fast that the mean overflows. */
+    big = g;
+    big.T.v.v[0] = huge * SE23_R(4);
+    s.f_b.v[0] = huge * SE23_R(4);
+    assert_int_equal(se23_gauss_predict(&model, &big, &s, &NOISE, SE23_INPUT_JAC_EXACT, &out), SE23_ERR_NONFINITE);
+    assert_memory_equal(&out, &out0, sizeof out);
+}
+
 /* ------------------------------------------------------------ carried <-> user */
 
 static void test_gauss_from_carried_m_matches_central_differences(void **state)
@@ -898,6 +941,7 @@ int main(void)
         cmocka_unit_test(test_gauss_propagate_rejects_bad_input_untouched),
         cmocka_unit_test(test_gauss_predict_matches_step_and_propagate),
         cmocka_unit_test(test_gauss_predict_rejects_bad_input_untouched),
+        cmocka_unit_test(test_gauss_predict_refuses_overflow_untouched),
         cmocka_unit_test(test_gauss_from_carried_m_matches_central_differences),
         cmocka_unit_test(test_gauss_carried_conversion_rejects_bad_input_untouched),
         cmocka_unit_test(test_gauss_monte_carlo_nees_within_chi2_interval),

@@ -543,6 +543,33 @@ static void test_preint_unc_add_rejects_bad_sample_and_noise_untouched(void **st
     assert_int_equal(se23_preint_unc_add(&fu, &good, &NOISE), SE23_OK);
 }
 
+/* Regression (issue 12, D3): a denormal dt or a huge density overflowed the
+ * noise with SE23_OK; now SE23_ERR_NONFINITE, the factor untouched. */
+static void test_preint_unc_add_refuses_overflow_untouched(void **state)
+{
+    (void)state;
+    se23_preint_unc_t fu, saved;
+    make_factor(10, SE23_INPUT_JAC_EXACT, &NOISE, &fu);
+    saved = fu;
+    static const double zero[6] = {0};
+    se23_imu_sample_t s = raw_sample(10, zero);
+#if SE23_CFG_DOUBLE
+    s.dt = 4.9e-324;
+#else
+    s.dt = 1.4e-45f;
+#endif
+    assert_int_equal(se23_preint_unc_add(&fu, &s, &NOISE), SE23_ERR_NONFINITE);
+    s = raw_sample(10, zero);
+    se23_imu_noise_t nz = NOISE;
+#if SE23_CFG_DOUBLE
+    nz.gyro_noise = 1e200; /* its square overflows */
+#else
+    nz.gyro_noise = 1e30f;
+#endif
+    assert_int_equal(se23_preint_unc_add(&fu, &s, &nz), SE23_ERR_NONFINITE);
+    assert_factor_same(&fu, &saved);
+}
+
 /* A valid factor with one defect planted by `plant`; add, correct,
  * correct_classic and check must return `expect` and change nothing. */
 static void expect_rejected(void (*plant)(se23_preint_unc_t *), se23_status_t expect)
@@ -662,6 +689,7 @@ int main(void)
         cmocka_unit_test(test_preint_unc_reset_gives_empty_factor),
         cmocka_unit_test(test_preint_unc_classic_is_opt_in),
         cmocka_unit_test(test_preint_unc_correct_reorthonormalises),
+        cmocka_unit_test(test_preint_unc_add_refuses_overflow_untouched),
         cmocka_unit_test(test_preint_unc_add_deltas_equal_preint_add),
         cmocka_unit_test(test_preint_unc_bias_jacobian_matches_central_differences),
         cmocka_unit_test(test_preint_unc_cov_matches_step_by_step_propagation),
