@@ -122,6 +122,9 @@ se23_status_t se23_earth_gamma(const se23_vec3_t *g_n, const se23_vec3_t *w_ie_n
     se23_m3_series(SE23_R(0.5), k1, k2, &phi, &M);
     se23_m3_mul_v3(&M, g_n, &out.p);
     se23_v3_scale(&out.p, t * t, &out.p);
+    if (!se23_pose_finite(&out)) {
+        return SE23_ERR_NONFINITE; /* |Omega t|^2 or t^2 g overflowed */
+    }
     *gamma = out;
     return SE23_OK;
 }

@@ -13,20 +13,6 @@
  * epsilons (relative) from model->dt: the difference is then rounding. */
 #define GAMMA_CACHE_ULPS SE23_R(4)
 
-/* Nonzero if every entry of T is finite (x * 0 is NaN for NaN or Inf). */
-static int pose_finite(const se23_pose_t *T)
-{
-    se23_real_t bad = SE23_R(0);
-    for (int i = 0; i < 3; ++i) {
-        bad = se23_fma(T->R.m[i][0], SE23_R(0), bad);
-        bad = se23_fma(T->R.m[i][1], SE23_R(0), bad);
-        bad = se23_fma(T->R.m[i][2], SE23_R(0), bad);
-        bad = se23_fma(T->v.v[i], SE23_R(0), bad);
-        bad = se23_fma(T->p.v[i], SE23_R(0), bad);
-    }
-    return se23_is_finite(bad);
-}
-
 se23_status_t se23_imu_sample_check(const se23_imu_sample_t *s, se23_real_t dt_max)
 {
     if (!se23_all_finite(s->w_ib_b.v, 3) || !se23_all_finite(s->f_b.v, 3) ||
@@ -76,7 +62,12 @@ se23_status_t se23_imu_increment(const se23_imu_sample_t *s, se23_pose_t *ups)
     if (st != SE23_OK) {
         return st;
     }
-    se23_imu_increment_parts(s, ups, NULL);
+    se23_pose_t u;
+    se23_imu_increment_parts(s, &u, NULL);
+    if (!se23_pose_finite(&u)) {
+        return SE23_ERR_NONFINITE; /* |w dt|^2 or dt f overflowed */
+    }
+    *ups = u;
     return SE23_OK;
 }
 
@@ -100,6 +91,9 @@ static se23_status_t first_order_increment(const se23_imu_sample_t *s, se23_real
     rotation_increment(s, &phi, &theta, &c, &out.R);
     se23_v3_scale(&s->f_b, s->dt, &out.v);
     se23_v3_scale(&s->f_b, pos_coeff * s->dt * s->dt, &out.p);
+    if (!se23_pose_finite(&out)) {
+        return SE23_ERR_NONFINITE; /* |w dt|^2 overflowed */
+    }
     *ups = out;
     return SE23_OK;
 }
@@ -176,7 +170,7 @@ se23_status_t se23_imu_step_ups(const se23_earth_model_t *model,
     se23_imu_transition(gamma, T, &u, s->dt, &next);
     /* Finite inputs can still overflow (|f| dt near the largest real, or a
      * state near it): refuse instead of returning Inf with SE23_OK. */
-    if (!pose_finite(&u) || !pose_finite(&next)) {
+    if (!se23_pose_finite(&u) || !se23_pose_finite(&next)) {
         return SE23_ERR_NONFINITE;
     }
     *T_next = next;

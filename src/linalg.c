@@ -15,6 +15,19 @@ int se23_all_finite(const se23_real_t *x, int n)
     return se23_is_finite(bad);
 }
 
+int se23_pose_finite(const se23_pose_t *T)
+{
+    se23_real_t bad = SE23_R(0); /* x * 0 is NaN for NaN or Inf */
+    for (int i = 0; i < 3; ++i) {
+        bad = se23_fma(T->R.m[i][0], SE23_R(0), bad);
+        bad = se23_fma(T->R.m[i][1], SE23_R(0), bad);
+        bad = se23_fma(T->R.m[i][2], SE23_R(0), bad);
+        bad = se23_fma(T->v.v[i], SE23_R(0), bad);
+        bad = se23_fma(T->p.v[i], SE23_R(0), bad);
+    }
+    return se23_is_finite(bad);
+}
+
 se23_real_t se23_v3_dot(const se23_vec3_t *a, const se23_vec3_t *b)
 {
     return a->v[0] * b->v[0] + a->v[1] * b->v[1] + a->v[2] * b->v[2];

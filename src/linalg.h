@@ -12,6 +12,10 @@
 /** Nonzero if all n values are finite. */
 int se23_all_finite(const se23_real_t *x, int n);
 
+/** Nonzero if every entry of T is finite: the last test of a fallible
+ *  function whose finite inputs may still overflow (types.h). */
+int se23_pose_finite(const se23_pose_t *T);
+
 /** a = (x[0], x[1], x[2]): a 3-block of a flat array as a vector.
  *  Inline: it sits in the per-column loops of the covariance products. */
 static inline void se23_v3_load(const se23_real_t *x, se23_vec3_t *a)

@@ -144,6 +144,9 @@ se23_status_t se23_exp(const se23_tangent_t *xi, se23_pose_t *T)
     se23_m3_series(SE23_R(1), c.c2, c.c3, &phi, &J);
     se23_m3_mul_v3(&J, &nu, &out.v);
     se23_m3_mul_v3(&J, &rho, &out.p);
+    if (!se23_pose_finite(&out)) {
+        return SE23_ERR_NONFINITE; /* |phi|^2 or J nu overflowed */
+    }
     *T = out;
     return SE23_OK;
 }

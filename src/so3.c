@@ -43,10 +43,11 @@ static se23_status_t eval_series(series_t kind, const se23_vec3_t *phi,
 {
     SE23_CHECK_NOT_NULL(phi);
     SE23_CHECK_NOT_NULL(out);
-    if (!se23_all_finite(phi->v, 3)) {
-        return SE23_ERR_NONFINITE;
+    const se23_real_t theta2 = se23_v3_dot(phi, phi);
+    if (!se23_all_finite(phi->v, 3) || !se23_is_finite(theta2)) {
+        return SE23_ERR_NONFINITE; /* |phi|^2 overflows above ~1e154 (double), 2e19 (float) */
     }
-    const se23_real_t theta = se23_sqrt(se23_v3_dot(phi, phi));
+    const se23_real_t theta = se23_sqrt(theta2);
     se23_so3_coeffs_t c;
     se23_real_t a0 = SE23_R(1);
     se23_real_t a1;

@@ -117,7 +117,8 @@ se23_status_t se23_earth_rate(se23_frame_t frame, se23_real_t lat,
  * @param g_n    gravity in the nav frame [m/s^2]
  * @param w_ie_n Earth rate in the nav frame [rad/s]
  * @param t      time [s], t >= 0
- * @return SE23_ERR_NONFINITE if an input holds NaN/Inf, SE23_ERR_DT if t < 0.
+ * @return SE23_ERR_NONFINITE if an input holds NaN/Inf or Gamma overflows,
+ *         SE23_ERR_DT if t < 0.
  */
 se23_status_t se23_earth_gamma(const se23_vec3_t *g_n, const se23_vec3_t *w_ie_n,
                                se23_real_t t, se23_pose_t *gamma);

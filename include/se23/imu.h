@@ -65,7 +65,8 @@ typedef struct {
  * (dR/dt = R w^, dV/dt = R f, dX/dt = V from (I, 0, 0)). J = J_l, H as in so3.h.
  * Public and check-free beyond the sample, so that covariance propagation
  * (F_k = Ad_{Upsilon^-1} F) and bias Jacobians can reuse it.
- * @return SE23_ERR_NONFINITE if the sample holds NaN/Inf, SE23_ERR_DT unless
+ * @return SE23_ERR_NONFINITE if the sample holds NaN/Inf or the increment
+ *         overflows, SE23_ERR_DT unless
  *         0 < dt <= SE23_CFG_DT_MAX.
  */
 se23_status_t se23_imu_increment(const se23_imu_sample_t *s, se23_pose_t *ups);

@@ -64,7 +64,7 @@ se23_status_t se23_from_mat5(const se23_mat5_t *M, se23_pose_t *T);
 /**
  * T = exp(xi) = (exp(phi^), J_l(phi) nu, J_l(phi) rho)  (paper eq. exp:map,
  * with N(omega) = J_l(phi); see DESIGN.md section 3 for the printed typo).
- * @return SE23_ERR_NONFINITE if xi holds NaN/Inf.
+ * @return SE23_ERR_NONFINITE if xi holds NaN/Inf or the result overflows.
  */
 se23_status_t se23_exp(const se23_tangent_t *xi, se23_pose_t *T);
 

@@ -37,7 +37,7 @@ void se23_so3_vee(const se23_mat3_t *W, se23_vec3_t *phi);
 
 /**
  * R = exp(phi^) by Rodrigues' formula.
- * @return SE23_ERR_NONFINITE if phi holds NaN/Inf.
+ * @return SE23_ERR_NONFINITE if phi holds NaN/Inf or |phi|^2 overflows.
  */
 se23_status_t se23_so3_exp(const se23_vec3_t *phi, se23_mat3_t *R);
 
@@ -54,7 +54,7 @@ se23_status_t se23_so3_log(const se23_mat3_t *R, se23_vec3_t *phi);
 /**
  * J = J_l(phi) = sum_n phi^^n/(n+1)!, the left Jacobian:
  * exp(phi + d) = exp(J_l(phi) d) exp(phi) to first order in d.
- * @return SE23_ERR_NONFINITE if phi holds NaN/Inf.
+ * @return SE23_ERR_NONFINITE if phi holds NaN/Inf or |phi|^2 overflows.
  */
 se23_status_t se23_so3_jl(const se23_vec3_t *phi, se23_mat3_t *J);
 
@@ -68,7 +68,7 @@ se23_status_t se23_so3_jl_inv(const se23_vec3_t *phi, se23_mat3_t *Jinv);
 /**
  * J = J_r(phi) = J_l(-phi), the right Jacobian:
  * exp(phi + d) = exp(phi) exp(J_r(phi) d) to first order in d.
- * @return SE23_ERR_NONFINITE if phi holds NaN/Inf.
+ * @return SE23_ERR_NONFINITE if phi holds NaN/Inf or |phi|^2 overflows.
  */
 se23_status_t se23_so3_jr(const se23_vec3_t *phi, se23_mat3_t *J);
 
@@ -76,7 +76,7 @@ se23_status_t se23_so3_jr(const se23_vec3_t *phi, se23_mat3_t *J);
  * H = sum_n phi^^n/(n+2)!
  *   = I/2 + (theta - sin theta)/theta^3 phi^ + (theta^2/2 + cos theta - 1)/theta^4 phi^^2.
  * The position increment of a constant-rate IMU sample is dt^2 H(omega dt) a.
- * @return SE23_ERR_NONFINITE if phi holds NaN/Inf.
+ * @return SE23_ERR_NONFINITE if phi holds NaN/Inf or |phi|^2 overflows.
  */
 se23_status_t se23_so3_h(const se23_vec3_t *phi, se23_mat3_t *H);
 
@@ -85,7 +85,7 @@ se23_status_t se23_so3_h(const se23_vec3_t *phi, se23_mat3_t *H);
  *   = I/2 + (sin theta - theta cos theta)/theta^3 phi^
  *         + (theta^2/2 - cos theta - theta sin theta + 1)/theta^4 phi^^2.
  * Used for the rotating-Earth position term Gamma^x (DESIGN.md section 3).
- * @return SE23_ERR_NONFINITE if phi holds NaN/Inf.
+ * @return SE23_ERR_NONFINITE if phi holds NaN/Inf or |phi|^2 overflows.
  */
 se23_status_t se23_so3_k(const se23_vec3_t *phi, se23_mat3_t *K);
 

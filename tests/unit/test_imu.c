@@ -646,6 +646,26 @@ static void test_imu_step_ups_matches_step_and_increment(void **state)
 #endif
 }
 
+/* Regression (issue 12, D3): a finite rate whose |w dt|^2 overflows gave
+ * NaN increments with SE23_OK; now SE23_ERR_NONFINITE, nothing written. */
+static void test_imu_increments_refuse_overflow(void **state)
+{
+    (void)state;
+#if SE23_CFG_DOUBLE
+    const se23_real_t w = 1e157;
+#else
+    const se23_real_t w = 1e22f;
+#endif
+    const se23_imu_sample_t s = {{{w, 0, 0}}, {{0, 0, SE23_R(9.8)}}, SE23_R(0.01)};
+    se23_pose_t out, out0;
+    memset(&out, 0x5a, sizeof out);
+    out0 = out;
+    assert_int_equal(se23_imu_increment(&s, &out), SE23_ERR_NONFINITE);
+    assert_int_equal(se23_imu_increment_forster(&s, &out), SE23_ERR_NONFINITE);
+    assert_int_equal(se23_imu_increment_paper(&s, &out), SE23_ERR_NONFINITE);
+    assert_memory_equal(&out, &out0, sizeof out);
+}
+
 static void test_imu_step_rejects_bad_samples(void **state)
 {
     (void)state;
@@ -744,6 +764,7 @@ int main(void)
         cmocka_unit_test(test_imu_carried_conversions_invert),
         cmocka_unit_test(test_imu_increment_rejects_bad_samples),
         cmocka_unit_test(test_imu_step_ups_matches_step_and_increment),
+        cmocka_unit_test(test_imu_increments_refuse_overflow),
         cmocka_unit_test(test_imu_step_rejects_bad_samples),
         cmocka_unit_test(test_imu_step_rejects_bad_states),
         cmocka_unit_test(test_imu_null_arguments_return_err_null),

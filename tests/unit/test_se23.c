@@ -3,6 +3,7 @@
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
+#include <string.h>
 
 #include <cmocka.h>
 
@@ -235,6 +236,20 @@ static void test_se23_from_mat5_roundtrip_and_rejects(void **state)
 
 static void test_se23_exp_log_reject_bad_input_untouched(void **state)
 {
+    {
+        /* Regression (issue 12, D3): |phi|^2 overflowing gave NaN with SE23_OK. */
+        se23_tangent_t big = {{0}};
+#if SE23_CFG_DOUBLE
+        big.v[SE23_IDX_PHI] = 1e155;
+#else
+        big.v[SE23_IDX_PHI] = 2e19f;
+#endif
+        se23_pose_t o, o0;
+        memset(&o, 0x5a, sizeof o);
+        o0 = o;
+        assert_int_equal(se23_exp(&big, &o), SE23_ERR_NONFINITE);
+        assert_memory_equal(&o, &o0, sizeof o);
+    }
     (void)state;
     se23_tangent_t xi = {{0.1, 0.2, 0.3, 1, 2, 3, 4, 5, (se23_real_t)INFINITY}};
     se23_pose_t T, before;

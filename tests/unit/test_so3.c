@@ -3,6 +3,7 @@
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
+#include <string.h>
 
 #include <cmocka.h>
 
@@ -102,6 +103,27 @@ static void test_so3_log_at_pi_returns_an_angle_pi_vector(void **state)
     double sign = phi.v[0] > 0 ? 1.0 : -1.0;
     for (int i = 0; i < 3; ++i) {
         assert_near(phi.v[i], sign * PI * n[i], TOL, 0);
+    }
+}
+
+/* Regression (issue 12, D3): |phi|^2 overflowed to Inf and every series
+ * returned NaN with SE23_OK; now SE23_ERR_NONFINITE, nothing written. */
+static void test_so3_series_refuse_overflowing_angle(void **state)
+{
+    (void)state;
+#if SE23_CFG_DOUBLE
+    const se23_vec3_t phi = {{1e155, 0, 0}};
+#else
+    const se23_vec3_t phi = {{2e19f, 0, 0}};
+#endif
+    se23_status_t (*const fns[])(const se23_vec3_t *, se23_mat3_t *) = {
+        se23_so3_exp, se23_so3_jl, se23_so3_jr, se23_so3_h, se23_so3_k};
+    for (size_t i = 0; i < sizeof fns / sizeof fns[0]; ++i) {
+        se23_mat3_t out, out0;
+        memset(&out, 0x5a, sizeof out);
+        out0 = out;
+        assert_int_equal(fns[i](&phi, &out), SE23_ERR_NONFINITE);
+        assert_memory_equal(&out, &out0, sizeof out);
     }
 }
 
@@ -381,6 +403,7 @@ int main(void)
         cmocka_unit_test(test_so3_exp_is_rotation_and_log_inverts),
         cmocka_unit_test(test_so3_log_at_pi_returns_an_angle_pi_vector),
         cmocka_unit_test(test_so3_exp_log_roundtrip_random_rotations),
+        cmocka_unit_test(test_so3_series_refuse_overflowing_angle),
         cmocka_unit_test(test_so3_jl_matches_central_differences),
         cmocka_unit_test(test_so3_jr_matches_central_differences),
         cmocka_unit_test(test_so3_jl_inv_inverts_jl),
