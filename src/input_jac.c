@@ -209,8 +209,13 @@ se23_status_t se23_gauss_input_jac(se23_input_jac_kind_t kind,
     se23_pose_t U;
     se23_increment_parts_t q;
     se23_input_blocks_t Bt;
+    se23_mat9x6_t out;
     se23_imu_increment_parts(&s, &U, &q);
     se23_input_blocks(kind, &q, &U.R, f_b, dt, &Bt);
-    se23_input_blocks_rotate(&U.R, &Bt, B);
+    se23_input_blocks_rotate(&U.R, &Bt, &out);
+    if (!se23_all_finite(out.m, 54)) {
+        return SE23_ERR_NONFINITE; /* |w dt|^2 or dt^2 f overflowed */
+    }
+    *B = out;
     return SE23_OK;
 }

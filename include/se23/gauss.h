@@ -161,8 +161,8 @@ void se23_gauss_fk_mul(const se23_pose_t *U, se23_real_t dt,
  * @param w_b corrected angular rate, body frame [rad/s]
  * @param f_b corrected specific force, body frame [m/s^2]
  * @param dt  sample interval [s], 0 < dt <= SE23_CFG_DT_MAX
- * @return SE23_ERR_NONFINITE, SE23_ERR_DT, or SE23_ERR_DOMAIN for an
- *         unknown kind.
+ * @return SE23_ERR_NONFINITE (NaN/Inf in, or B would overflow), SE23_ERR_DT,
+ *         or SE23_ERR_DOMAIN for an unknown kind.
  */
 se23_status_t se23_gauss_input_jac(se23_input_jac_kind_t kind,
                                    const se23_vec3_t *w_b,
