@@ -88,6 +88,11 @@ $(eval $(call cmake_tree,double,ON))
 $(eval $(call cmake_tree,float,OFF))
 # The unit tests once more with SE23_CFG_DEEP_CHECKS=1 (no Eigen reference).
 $(eval $(call cmake_tree,deep,ON,-DSE23_DEEP_CHECKS=ON -DSE23_BUILD_REFERENCE=OFF))
+# The unit tests of both precisions under AddressSanitizer and
+# UndefinedBehaviorSanitizer (no Eigen reference; every finding aborts).
+SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+$(eval $(call cmake_tree,asan-double,ON,-DSE23_BUILD_REFERENCE=OFF -DCMAKE_C_FLAGS="$(SAN_FLAGS)" -DCMAKE_EXE_LINKER_FLAGS="$(SAN_FLAGS)"))
+$(eval $(call cmake_tree,asan-float,OFF,-DSE23_BUILD_REFERENCE=OFF -DCMAKE_C_FLAGS="$(SAN_FLAGS)" -DCMAKE_EXE_LINKER_FLAGS="$(SAN_FLAGS)"))
 
 check: deps
 	@BUILD=$(BUILD) JOBS=$(JOBS) sh tests/check.sh
