@@ -1,8 +1,9 @@
-# Hostile LCM logs (issue 12: T1, T2, T3). se23-report reads logs with the
-# project's own reader (tools/lcm/logfile.c): a corrupt event is reported with
-# its byte offset, reading goes on at the next valid event. se23-report's
-# early exits leak nothing under valgrind. Uses HB, HW, HVG and the logs of
-# 60-harness.sh.
+# Hostile LCM logs (issue 12: T1, T2, T3). se23-ins (file input) and
+# se23-report read logs with the project's own reader (tools/lcm/logfile.c):
+# a corrupt event is reported with its byte offset, reading goes on at the
+# next valid event, the bytes skipped are counted, and the exit status says so
+# (3). se23-report's early exits leak nothing under valgrind. Uses HB, HW, HVG
+# and the logs of 60-harness.sh.
 HL="$BUILD/check/logs"
 mkdir -p "$HL"
 
@@ -31,6 +32,13 @@ l_huge_log() {
     [ "$(wc -c <"$HL/huge.log")" -eq 52 ]
 }
 L_HUGE_MSG="huge.log: corrupt event at byte 0: data length 2147483647"
+l_huge_ins() {
+    l_huge_log &&
+        l_status huge-ins 3 "$L_HUGE_MSG" "$HB/se23-ins" --in "file://$HL/huge.log?speed=0" \
+            --out "file://$HL/huge.ins.log?mode=w" &&
+        grep -q "^  log_skipped_bytes 52\$" "$HL/huge-ins.out"
+}
+check logs-huge-datalen-ins l_huge_ins
 l_huge_report() {
     l_huge_log && l_status huge-report 1 "$L_HUGE_MSG" "$HB/se23-report" "$HL/huge.log"
 }
