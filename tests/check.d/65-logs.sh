@@ -1,9 +1,8 @@
-# Hostile LCM logs (issue 12: T1, T2, T3). se23-ins (file input) and
-# se23-report read logs with the project's own reader (tools/lcm/logfile.c):
-# a corrupt event is reported with its byte offset, reading goes on at the
-# next valid event, the bytes skipped are counted, and the exit status says so
-# (3). se23-report's early exits leak nothing under valgrind. Uses HB, HW, HVG
-# and the logs of 60-harness.sh.
+# Hostile LCM logs (issue 12: T1, T2, T3, T6). The tools read logs with their
+# own reader (tools/lcm/logfile.c): a corrupt event is reported with its byte
+# offset, reading goes on at the next valid event, the bytes skipped are
+# counted, and the exit status says so (3). se23-report's early exits leak
+# nothing under valgrind. Uses HB, HW, HVG and the logs of 60-harness.sh.
 HL="$BUILD/check/logs"
 mkdir -p "$HL"
 
@@ -55,3 +54,22 @@ l_early_exits() {
             $HVG "$HB/se23-report" "$HW/e2e-uav.sim.log"
 }
 check logs-report-early-exits-valgrind l_early_exits
+
+# T6: every framing case of se23-corrupt --framing (tools/lcm/corrupt_framing.c)
+# in one log: se23-ins must lose exactly the broken events (its counters as
+# expected, log_skipped_bytes the bytes of the cases) and exit 3; se23-report
+# must still pass --check on the rest, and exit 3 for the skipped bytes. All
+# under valgrind.
+l_resync() {
+    $HVG "$HB/se23-corrupt" --framing "$HW/corrupt.sim.log" "$HL/framing.log" \
+        >"$HL/framing.expect" || return 1
+    lr_skipped=$(awk '$2 == "log_skipped_bytes" {print $3}' "$HL/framing.expect")
+    l_status framing-ins 3 "framing.log: corrupt event at byte" \
+        $HVG "$HB/se23-ins" --in "file://$HL/framing.log?speed=0" \
+        --out "file://$HL/framing.ins.log?mode=w" &&
+        h_expect "$HL/framing.expect" "$HL/framing-ins.out" &&
+        l_status framing-report 3 "LOG CORRUPT: $lr_skipped bytes skipped in 7 places" \
+            $HVG "$HB/se23-report" --check "$HL/framing.log" "$HL/framing.ins.log" &&
+        grep -q "^CHECK PASSED" "$HL/framing-report.out"
+}
+check logs-resync-framing-valgrind l_resync
