@@ -4,6 +4,7 @@
 
 #include <errno.h>
 #include <fcntl.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 #include <sys/mman.h>
@@ -29,6 +30,18 @@ static int64_t be64s(const unsigned char *p)
     return u <= INT64_MAX ? (int64_t)u : (int64_t)(u - INT64_MAX - 1) + INT64_MIN;
 }
 
+/* Says why (when why is not NULL); returns 0. */
+static int reject(char *why, size_t n, const char *fmt, ...)
+{
+    va_list ap;
+    if (why != NULL) {
+        va_start(ap, fmt);
+        vsnprintf(why, n, fmt, ap);
+        va_end(ap);
+    }
+    return 0;
+}
+
 /*
  * Checks the header of the event at off; on success *end is the offset
  * after it. Otherwise, if why is not NULL, says what is wrong.
@@ -39,38 +52,24 @@ static int header_ok(const logfile_t *lf, size_t off, size_t *end, char *why, si
     int32_t cl, dl;
     size_t left = lf->size - off, i;
     if (left < LOGFILE_HEADER) {
-        if (why) {
-            snprintf(why, n, "truncated header (%zu bytes left)", left);
-        }
-        return 0;
+        return reject(why, n, "truncated header (%zu bytes left)", left);
     }
+    left -= LOGFILE_HEADER;
     cl = be32s(p + 20);
     dl = be32s(p + 24);
     if (be32(p) != LOGFILE_SYNC) {
-        if (why) {
-            snprintf(why, n, "no sync word (0x%08lx)", (unsigned long)be32(p));
-        }
-        return 0;
+        return reject(why, n, "no sync word (0x%08lx)", (unsigned long)be32(p));
     }
-    if (cl < 1 || cl > LCM_MAX_CHANNEL_NAME_LENGTH) {
-        if (why) {
-            snprintf(why, n, "channel length %ld", (long)cl);
-        }
-        return 0;
+    if (cl < 1 || cl > LCM_MAX_CHANNEL_NAME_LENGTH || (size_t)cl > left) {
+        return reject(why, n, "channel length %ld, %zu bytes left in the file", (long)cl, left);
     }
-    if (dl < 0 || dl > LCM_MAX_MESSAGE_SIZE || (size_t)cl + (size_t)dl > left - LOGFILE_HEADER) {
-        if (why) {
-            snprintf(why, n, "data length %ld, %zu bytes left in the file", (long)dl,
-                     left - LOGFILE_HEADER - (size_t)cl);
-        }
-        return 0;
+    left -= (size_t)cl;
+    if (dl < 0 || dl > LCM_MAX_MESSAGE_SIZE || (size_t)dl > left) {
+        return reject(why, n, "data length %ld, %zu bytes left in the file", (long)dl, left);
     }
     for (i = 0; i < (size_t)cl; i++) {
         if (p[LOGFILE_HEADER + i] < 0x21 || p[LOGFILE_HEADER + i] > 0x7e) {
-            if (why) {
-                snprintf(why, n, "channel name not printable");
-            }
-            return 0;
+            return reject(why, n, "channel name not printable");
         }
     }
     *end = off + LOGFILE_HEADER + (size_t)cl + (size_t)dl;
@@ -115,8 +114,8 @@ static int accepted(const logfile_t *lf, size_t off, size_t *end, char *why, siz
         return 0;
     }
     if (!followed(lf, *end) && next_framed(lf, off + 1, *end) < *end) {
-        snprintf(why, n, "data length %ld runs into the next event", (long)be32s(lf->map + off + 24));
-        return 0;
+        return reject(why, n, "data length %ld runs into the next event",
+                      (long)be32s(lf->map + off + 24));
     }
     return 1;
 }
