@@ -23,9 +23,9 @@ H_CFLAGS := $(WARN) -Wshadow -Wstrict-prototypes -Wmissing-prototypes -O2 -g \
 
 H_COMMON := tools/lcm/harness.c tools/lcm/ldmath.c
 H_SIM_SRCS := $(wildcard tools/sim/*.c) $(H_COMMON)
-H_INS_SRCS := $(wildcard tools/ins/*.c) $(H_COMMON)
-H_REPORT_SRCS := $(wildcard tools/report/*.c) $(H_COMMON)
-H_CORRUPT_SRCS := tools/lcm/corrupt.c $(H_COMMON)
+H_INS_SRCS := $(wildcard tools/ins/*.c) $(H_COMMON) tools/lcm/logfile.c
+H_REPORT_SRCS := $(wildcard tools/report/*.c) $(H_COMMON) tools/lcm/logfile.c
+H_CORRUPT_SRCS := tools/lcm/corrupt.c tools/lcm/corrupt_framing.c tools/lcm/logfile.c $(H_COMMON)
 H_HDRS := $(wildcard tools/lcm/*.h tools/sim/*.h tools/ins/*.h tools/report/*.h) $(LIB_HDRS)
 H_LIB := $(BUILD)/lib-host-double/libse23.a
 h_objs = $(patsubst %.c,$(H)/obj/%.o,$(1))

@@ -75,6 +75,23 @@ h_preint() {
 }
 check harness-preint-factors-noisy h_preint
 
+# h_expect EXPECT SUMMARY: every "expect COUNTER VALUE" line of EXPECT (from
+# se23-corrupt) holds in the se23-ins summary SUMMARY.
+h_expect() {
+    he_fail=0
+    while read -r he_word he_key he_val; do
+        [ "$he_word" = expect ] || continue
+        he_got=$(awk -v k="$he_key" '$1 == k {print $2}' "$2")
+        if [ "$he_got" = "$he_val" ]; then
+            echo "ok   $he_key = $he_val"
+        else
+            echo "FAIL $he_key: expected $he_val, got $he_got"
+            he_fail=1
+        fi
+    done <"$1"
+    [ "$he_fail" = 0 ]
+}
+
 # 3. Corrupted stream: every bad-input case of tools/lcm/corrupt.c; each
 #    counter of se23-ins must equal what the corrupter injected, and the
 #    state must stay finite and consistent (same check as above).
@@ -83,18 +100,7 @@ h_corrupt() {
         "$HB/se23-corrupt" "$HW/corrupt.sim.log" "$HW/corrupt.bad.log" >"$HW/corrupt.expect" &&
         "$HB/se23-ins" --in "file://$HW/corrupt.bad.log?speed=0" \
             --out "file://$HW/corrupt.ins.log?mode=w" >"$HW/corrupt.txt" || return 1
-    hc_fail=0
-    while read -r hc_word hc_key hc_val; do
-        [ "$hc_word" = expect ] || continue
-        hc_got=$(awk -v k="$hc_key" '$1 == k {print $2}' "$HW/corrupt.txt")
-        if [ "$hc_got" = "$hc_val" ]; then
-            echo "ok   $hc_key = $hc_val"
-        else
-            echo "FAIL $hc_key: expected $hc_val, got $hc_got"
-            hc_fail=1
-        fi
-    done <"$HW/corrupt.expect"
-    [ "$hc_fail" = 0 ] &&
+    h_expect "$HW/corrupt.expect" "$HW/corrupt.txt" &&
         "$HB/se23-report" --check "$HW/corrupt.sim.log" "$HW/corrupt.ins.log"
 }
 check harness-corrupted-stream h_corrupt

@@ -16,6 +16,7 @@
 
 #include "../lcm/harness.h"
 #include "ins.h"
+#include "replay.h"
 #include "se23lcm_gnss_fix.h"
 #include "se23lcm_imu_sample.h"
 #include "se23lcm_nav_state.h"
@@ -291,7 +292,7 @@ static double cpu_seconds(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-static void summary(const node_t *nd, double cpu_s)
+static void summary(const node_t *nd, int64_t skipped, double cpu_s)
 {
     const ins_counters_t *c = &nd->ins.c;
     printf("se23-ins: input accounting\n");
@@ -310,18 +311,74 @@ static void summary(const node_t *nd, double cpu_s)
     printf("  time_resets       %lld\n", (long long)c->time_resets);
     printf("  filter_errors     %lld\n", (long long)c->filter_errors);
     printf("  init_rejected     %lld\n", (long long)c->init_rejected);
+    printf("  log_skipped_bytes %lld\n", (long long)skipped);
     printf("  status            0x%02x\n", (unsigned)nd->ins.status);
     printf("  cpu_seconds       %.3f\n", cpu_s);
     printf("  samples_per_s     %.0f\n", cpu_s > 0.0 ? (double)c->imu_used / cpu_s : 0.0);
 }
 
+static const replay_sub_t subs[] = {
+    {HARNESS_CH_IMU, on_imu, 10000},
+    {HARNESS_CH_GNSS, on_gnss, 1000},
+    {HARNESS_CH_INIT, on_init, 0},
+    {HARNESS_CH_SIM_END, on_end, 0},
+};
+#define N_SUBS ((int)(sizeof subs / sizeof subs[0]))
+
+static int should_stop(void *user)
+{
+    const node_t *nd = user;
+    return harness_stop_requested() || (nd->o.exit_on_end && nd->ended);
+}
+
+static void ready(const node_t *nd)
+{
+    if (nd->o.ready_file != NULL) {
+        FILE *rf = fopen(nd->o.ready_file, "w");
+        if (rf != NULL) {
+            fclose(rf);
+        }
+    }
+}
+
+/* Live input from in until a stop, an error or the idle timeout. */
+static void run_live(node_t *nd, lcm_t *in)
+{
+    int64_t last_input;
+    int k;
+    for (k = 0; k < N_SUBS; k++) {
+        lcm_subscription_t *s = lcm_subscribe(in, subs[k].channel, subs[k].handler, nd);
+        if (subs[k].queue_capacity > 0) {
+            lcm_subscription_set_queue_capacity(s, subs[k].queue_capacity);
+        }
+    }
+    ready(nd);
+    last_input = harness_now_ns();
+    while (!should_stop(nd)) {
+        int rc = lcm_handle_timeout(in, 200);
+        if (rc < 0) {
+            break;
+        }
+        if (rc > 0) {
+            last_input = harness_now_ns();
+        } else if (nd->o.idle_timeout > 0.0 &&
+                   (double)(harness_now_ns() - last_input) * 1e-9 > nd->o.idle_timeout) {
+            break;
+        }
+    }
+}
+
+/*
+ * Exit status: 0; 1 if the input or the output cannot be opened; 2 usage or
+ * configuration; 3 the input log was corrupt and bytes of it were skipped
+ * (log_skipped_bytes in the summary).
+ */
 int main(int argc, char **argv)
 {
     static node_t nd; /* large (ins_t holds covariances): not on the stack */
     ins_config_t cfg;
-    lcm_t *in;
-    int is_file, same;
-    int64_t last_input;
+    lcm_t *in = NULL;
+    int64_t skipped = 0;
     double cpu0;
 
     if (parse_args(argc, argv, &nd.o, &cfg) != 0) {
@@ -337,57 +394,39 @@ int main(int argc, char **argv)
     if (nd.nav_every < 1) {
         nd.nav_every = 1;
     }
-    in = lcm_create(nd.o.in_url);
-    if (in == NULL) {
-        fprintf(stderr, "se23-ins: cannot open %s\n", nd.o.in_url);
-        return 1;
+    if (strncmp(nd.o.in_url, "file://", 7) != 0) {
+        in = lcm_create(nd.o.in_url);
+        if (in == NULL) {
+            fprintf(stderr, "se23-ins: cannot open %s\n", nd.o.in_url);
+            return 1;
+        }
     }
-    same = strcmp(nd.o.in_url, nd.o.out_url) == 0;
-    nd.out = same ? in : lcm_create(nd.o.out_url);
+    nd.out = in != NULL && strcmp(nd.o.in_url, nd.o.out_url) == 0 ? in : lcm_create(nd.o.out_url);
     if (nd.out == NULL) {
         fprintf(stderr, "se23-ins: cannot open %s\n", nd.o.out_url);
-        lcm_destroy(in);
+        if (in != NULL) {
+            lcm_destroy(in);
+        }
         return 1;
     }
     harness_catch_stop_signals();
-    lcm_subscription_set_queue_capacity(lcm_subscribe(in, HARNESS_CH_IMU, on_imu, &nd), 10000);
-    lcm_subscription_set_queue_capacity(lcm_subscribe(in, HARNESS_CH_GNSS, on_gnss, &nd), 1000);
-    lcm_subscribe(in, HARNESS_CH_INIT, on_init, &nd);
-    lcm_subscribe(in, HARNESS_CH_SIM_END, on_end, &nd);
-    if (nd.o.ready_file != NULL) {
-        FILE *rf = fopen(nd.o.ready_file, "w");
-        if (rf != NULL) {
-            fclose(rf);
-        }
-    }
-
-    is_file = strncmp(nd.o.in_url, "file://", 7) == 0;
     cpu0 = cpu_seconds();
-    last_input = harness_now_ns();
-    while (!harness_stop_requested() && !(nd.o.exit_on_end && nd.ended)) {
-        if (is_file) {
-            if (lcm_handle(in) != 0) {
-                break; /* end of the log */
-            }
-        } else {
-            int rc = lcm_handle_timeout(in, 200);
-            if (rc < 0) {
-                break;
-            }
-            if (rc > 0) {
-                last_input = harness_now_ns();
-            } else if (nd.o.idle_timeout > 0.0 &&
-                       (double)(harness_now_ns() - last_input) * 1e-9 > nd.o.idle_timeout) {
-                break;
-            }
-        }
+    if (in != NULL) {
+        run_live(&nd, in);
+    } else {
+        ready(&nd);
+        skipped = replay_file(nd.o.in_url, subs, N_SUBS, &nd, should_stop);
     }
-    publish_nav(&nd); /* the final state */
-    progress(&nd, 1);
-    summary(&nd, cpu_seconds() - cpu0);
-    if (!same) {
+    if (skipped >= 0) {
+        publish_nav(&nd); /* the final state */
+        progress(&nd, 1);
+        summary(&nd, skipped, cpu_seconds() - cpu0);
+    }
+    if (nd.out != in) {
         lcm_destroy(nd.out);
     }
-    lcm_destroy(in);
-    return 0;
+    if (in != NULL) {
+        lcm_destroy(in);
+    }
+    return skipped < 0 ? 1 : skipped > 0 ? 3 : 0;
 }

@@ -22,6 +22,7 @@
  *   positive semidefinite                             -> init_rejected (3), state kept
  *
  * usage: se23-corrupt IN.log OUT.log
+ *        se23-corrupt --framing IN.log OUT.log   (corrupt_framing.c)
  */
 #define _POSIX_C_SOURCE 200809L
 #include <lcm/eventlog.h>
@@ -30,7 +31,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "corrupt_framing.h"
 #include "harness.h"
+#include "logfile.h"
 #include "se23lcm_gnss_fix.h"
 #include "se23lcm_imu_sample.h"
 #include "se23lcm_nav_state.h"
@@ -75,7 +78,7 @@ static void write_raw(ctx_t *c, const char *ch, int64_t ts, const void *data, in
     ev.channellen = (int32_t)strlen(ch);
     ev.datalen = len;
     ev.channel = (char *)ch;
-    ev.data = (void *)data;
+    ev.data = (void *)data; /* LCM's type is not const; it is only written out */
     if (lcm_eventlog_write_event(c->out, &ev) != 0) {
         fprintf(stderr, "se23-corrupt: write failed\n");
         exit(1);
@@ -212,7 +215,7 @@ static void bad_inits(ctx_t *c, int64_t ts, const se23lcm_nav_state *init)
     c->init_rej += 3;
 }
 
-static void on_gnss(ctx_t *c, int64_t ts, const lcm_eventlog_event_t *ev, int64_t last_seq)
+static void on_gnss(ctx_t *c, int64_t ts, const logfile_event_t *ev, int64_t last_seq)
 {
     se23lcm_gnss_fix g;
     if (last_seq >= K_OUTAGE && last_seq < K_OUTAGE + OUTAGE_LEN) {
@@ -235,57 +238,67 @@ static void on_gnss(ctx_t *c, int64_t ts, const lcm_eventlog_event_t *ev, int64_
 int main(int argc, char **argv)
 {
     static ctx_t c;
-    lcm_eventlog_t *in;
-    lcm_eventlog_event_t *ev;
+    logfile_t in;
+    logfile_event_t ev;
     int64_t last_seq = 0;
     int early_done = 0;
     se23lcm_nav_state init;
-    int have_init = 0;
+    int have_init = 0, corrupt = 0;
+    if (argc == 4 && strcmp(argv[1], "--framing") == 0) {
+        return corrupt_framing(argv[2], argv[3]);
+    }
     if (argc != 3) {
-        fprintf(stderr, "usage: se23-corrupt IN.log OUT.log\n");
+        fprintf(stderr, "usage: se23-corrupt [--framing] IN.log OUT.log\n");
         return 2;
     }
-    in = lcm_eventlog_create(argv[1], "r");
-    c.out = lcm_eventlog_create(argv[2], "w");
-    if (in == NULL || c.out == NULL) {
-        fprintf(stderr, "se23-corrupt: cannot open %s or %s\n", argv[1], argv[2]);
+    if (logfile_open(&in, argv[1], "se23-corrupt") != 0) {
         return 1;
     }
-    while ((ev = lcm_eventlog_read_next_event(in)) != NULL) {
-        if (!have_init && strcmp(ev->channel, HARNESS_CH_INIT) == 0) {
-            have_init = se23lcm_nav_state_decode(ev->data, 0, ev->datalen, &init) >= 0;
+    c.out = lcm_eventlog_create(argv[2], "w");
+    if (c.out == NULL) {
+        fprintf(stderr, "se23-corrupt: cannot open %s\n", argv[2]);
+        logfile_close(&in);
+        return 1;
+    }
+    while (!corrupt && logfile_next(&in, &ev)) {
+        if (!have_init && strcmp(ev.channel, HARNESS_CH_INIT) == 0) {
+            have_init = se23lcm_nav_state_decode(ev.data, 0, ev.datalen, &init) >= 0;
         }
         if (have_init && !c.bad_init_done && last_seq > K_BAD_INIT) {
-            bad_inits(&c, ev->timestamp, &init);
+            bad_inits(&c, ev.timestamp, &init);
             c.bad_init_done = 1;
         }
-        if (!early_done && strcmp(ev->channel, HARNESS_CH_INIT) == 0) {
+        if (!early_done && strcmp(ev.channel, HARNESS_CH_INIT) == 0) {
             se23lcm_imu_sample e; /* a sample before the initial state */
             memset(&e, 0, sizeof e);
             e.seq = 1;
             e.t_ns = 1;
-            write_imu(&c, ev->timestamp, &e);
+            write_imu(&c, ev.timestamp, &e);
             c.early++;
             early_done = 1;
         }
-        if (strcmp(ev->channel, HARNESS_CH_IMU) == 0) {
+        if (strcmp(ev.channel, HARNESS_CH_IMU) == 0) {
             se23lcm_imu_sample m;
-            if (se23lcm_imu_sample_decode(ev->data, 0, ev->datalen, &m) < 0) {
-                fprintf(stderr, "se23-corrupt: the input log is already corrupt\n");
-                return 1;
+            if (se23lcm_imu_sample_decode(ev.data, 0, ev.datalen, &m) < 0) {
+                corrupt = 1;
+                break;
             }
             last_seq = m.seq;
-            on_imu(&c, ev->timestamp, m);
-        } else if (strcmp(ev->channel, HARNESS_CH_GNSS) == 0) {
-            on_gnss(&c, ev->timestamp, ev, last_seq);
-        } else if (!(strcmp(ev->channel, HARNESS_CH_TRUTH) == 0 && last_seq >= K_OUTAGE &&
+            on_imu(&c, ev.timestamp, m);
+        } else if (strcmp(ev.channel, HARNESS_CH_GNSS) == 0) {
+            on_gnss(&c, ev.timestamp, &ev, last_seq);
+        } else if (!(strcmp(ev.channel, HARNESS_CH_TRUTH) == 0 && last_seq >= K_OUTAGE &&
                      last_seq < K_OUTAGE + OUTAGE_LEN)) {
-            write_raw(&c, ev->channel, ev->timestamp, ev->data, ev->datalen);
+            write_raw(&c, ev.channel, ev.timestamp, ev.data, ev.datalen);
         }
-        lcm_eventlog_free_event(ev);
     }
-    lcm_eventlog_destroy(in);
+    corrupt = corrupt || in.bytes_skipped > 0;
+    logfile_close(&in);
     lcm_eventlog_destroy(c.out);
+    if (corrupt) {
+        fprintf(stderr, "se23-corrupt: the input log is already corrupt\n");
+        return 1;
+    }
     if (c.n_imu_in < K_LAST) {
         fprintf(stderr, "se23-corrupt: the input has %lld IMU samples, needs %d\n",
                 (long long)c.n_imu_in, K_LAST);

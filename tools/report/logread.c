@@ -1,12 +1,12 @@
 /* Reading harness logs; see logread.h. */
 #include "logread.h"
 
-#include <lcm/eventlog.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "../lcm/harness.h"
+#include "../lcm/logfile.h"
 
 /* Grows *arr (elements of size sz) to hold one more; returns the slot. */
 static void *push(void **arr, size_t *n, size_t *cap, size_t sz)
@@ -23,7 +23,7 @@ static void *push(void **arr, size_t *n, size_t *cap, size_t sz)
     return (char *)*arr + (*n)++ * sz;
 }
 
-static void decode_event(const lcm_eventlog_event_t *ev, log_data_t *d)
+static void decode_event(const logfile_event_t *ev, log_data_t *d)
 {
     const char *ch = ev->channel;
     int len = ev->datalen;
@@ -89,17 +89,18 @@ static void decode_event(const lcm_eventlog_event_t *ev, log_data_t *d)
 
 int log_read(const char *path, log_data_t *d)
 {
-    lcm_eventlog_t *log = lcm_eventlog_create(path, "r");
-    lcm_eventlog_event_t *ev;
-    if (log == NULL) {
+    logfile_t log;
+    logfile_event_t ev;
+    if (logfile_open(&log, path, "se23-report") != 0) {
         return -1;
     }
-    while ((ev = lcm_eventlog_read_next_event(log)) != NULL) {
+    while (logfile_next(&log, &ev)) {
         d->n_events++;
-        decode_event(ev, d);
-        lcm_eventlog_free_event(ev);
+        decode_event(&ev, d);
     }
-    lcm_eventlog_destroy(log);
+    d->bytes_skipped += log.bytes_skipped;
+    d->corrupt_spans += log.corrupt_spans;
+    logfile_close(&log);
     return 0;
 }
 
@@ -129,7 +130,9 @@ void log_sort(log_data_t *d)
     navkey_t *keys;
     se23lcm_nav_state *sorted;
     size_t i, n = 0;
-    qsort(d->truth, d->n_truth, sizeof *d->truth, cmp_truth);
+    if (d->n_truth > 0) { /* qsort(NULL, 0, ...) is undefined */
+        qsort(d->truth, d->n_truth, sizeof *d->truth, cmp_truth);
+    }
     if (d->n_nav == 0) {
         return;
     }

@@ -2,7 +2,8 @@
  * @file logread.h
  * @brief Reads LCM event logs of the se23 harness into arrays (truth, nav
  *        states, GNSS fixes, run description), decoding each event with the
- *        generated fixed-size types; events that fail to decode are counted.
+ *        generated fixed-size types; events that fail to decode are counted,
+ *        and so are the bytes of corrupt events skipped (tools/lcm/logfile.h).
  */
 #ifndef REPORT_LOGREAD_H
 #define REPORT_LOGREAD_H
@@ -33,9 +34,15 @@ typedef struct {
     int64_t preint_samples; /**< IMU samples covered by the factors */
     int64_t n_events;       /**< all events read */
     int64_t n_decode_errors; /**< events of a known channel that failed to decode */
+    int64_t bytes_skipped;   /**< bytes of corrupt events passed over (logfile.h) */
+    int64_t corrupt_spans;   /**< places where reading resynchronised */
 } log_data_t;
 
-/** Appends the events of the log at path to d. Returns 0, or -1 if unreadable. */
+/**
+ * Appends the valid events of the log at path to d. Returns 0, or -1 (after
+ * a message) if the file cannot be read; a corrupt log is read past its bad
+ * events (d->bytes_skipped).
+ */
 int log_read(const char *path, log_data_t *d);
 
 /** Sorts truth and nav by time; for equal times keeps the last nav read. */

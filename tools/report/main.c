@@ -242,10 +242,9 @@ static int make_plots(const rep_opts_t *o, const log_data_t *d)
     return system(cmd);
 }
 
-int main(int argc, char **argv)
+/* The report of the logs in d (truth present): 1 if every check passed. */
+static int report(const rep_opts_t *o, log_data_t *d)
 {
-    rep_opts_t o;
-    log_data_t d;
     epoch_t *ep;
     size_t i, n = 0, n_nees9 = 0, n_nees15 = 0, n_in99 = 0;
     double nees9 = 0.0, nees15 = 0.0;
@@ -253,26 +252,15 @@ int main(int argc, char **argv)
     const se23lcm_nav_state *last;
     int ok = 1, k;
 
-    if (parse_args(argc, argv, &o) != 0) {
-        usage(stderr);
-        return 2;
-    }
-    memset(&d, 0, sizeof d);
-    for (k = 0; k < o.n_logs; k++) {
-        if (log_read(o.logs[k], &d) != 0) {
-            fprintf(stderr, "se23-report: cannot read %s\n", o.logs[k]);
-            return 1;
-        }
-    }
-    log_sort(&d);
-    ep = malloc((d.n_nav + 1) * sizeof *ep);
+    log_sort(d);
+    ep = malloc((d->n_nav + 1) * sizeof *ep);
     if (ep == NULL) {
-        return 1;
+        return 0;
     }
-    for (i = 0; i < d.n_nav; i++) {
-        long j = log_find_truth(&d, d.nav[i].t_ns);
+    for (i = 0; i < d->n_nav; i++) {
+        long j = log_find_truth(d, d->nav[i].t_ns);
         if (j >= 0) {
-            metrics_epoch(&d.truth[j], &d.nav[i], &ep[n]);
+            metrics_epoch(&d->truth[j], &d->nav[i], &ep[n]);
             if (isfinite(ep[n].nees9)) {
                 nees9 += ep[n].nees9;
                 n_nees9++;
@@ -285,11 +273,12 @@ int main(int argc, char **argv)
             n++;
         }
     }
-    print_header(&d);
+    print_header(d);
     if (n == 0) {
-        printf("no nav state matches a truth time (%zu truth, %zu nav states)\n", d.n_truth,
-               d.n_nav);
-        return 1;
+        printf("no nav state matches a truth time (%zu truth, %zu nav states)\n", d->n_truth,
+               d->n_nav);
+        free(ep);
+        return 0;
     }
     for (k = 0; k < G_COUNT; k++) {
         gs[k] = group_stats(ep, n, (group_t)k);
@@ -312,11 +301,11 @@ int main(int argc, char **argv)
         printf("  mean NEES, pose + biases (15):  %7.2f  (consistent: ~15)\n",
                nees15 / (double)n_nees15);
     }
-    last = &d.nav[d.n_nav - 1];
+    last = &d->nav[d->n_nav - 1];
     printf("\n  IMU samples in the log: %lld; integrated %lld, rejected %lld "
            "(non-finite %lld, range %lld, duplicate %lld, out of order %lld, bad time %lld, "
            "bad dt %lld), missing %lld, before init %lld\n",
-           (long long)d.n_imu, (long long)last->n_imu_used,
+           (long long)d->n_imu, (long long)last->n_imu_used,
            (long long)(last->n_imu_nonfinite + last->n_imu_range + last->n_imu_duplicate +
                        last->n_imu_out_of_order + last->n_imu_bad_time + last->n_imu_bad_dt),
            (long long)last->n_imu_nonfinite, (long long)last->n_imu_range,
@@ -327,81 +316,118 @@ int main(int argc, char **argv)
            "(report); time resets %lld; library errors %lld; initial states refused %lld; "
            "status 0x%02x\n",
            (long long)last->n_gnss_used, (long long)last->n_gnss_rejected,
-           (long long)last->n_decode_errors, (long long)d.n_decode_errors,
+           (long long)last->n_decode_errors, (long long)d->n_decode_errors,
            (long long)last->n_time_resets, (long long)last->n_filter_errors,
            (long long)last->n_init_rejected,
            (unsigned)last->status);
+    printf("  log bytes skipped as corrupt (report): %lld in %lld places\n",
+           (long long)d->bytes_skipped, (long long)d->corrupt_spans);
 
-    if (d.n_preint > 0) {
+    if (d->n_preint > 0) {
         preint_check_t pc;
-        preint_check(&d, &pc);
+        preint_check(d, &pc);
         printf("  preintegrated factors: %lld covering %lld IMU samples; %lld malformed\n",
-               (long long)d.n_preint, (long long)d.preint_samples, (long long)d.n_preint_bad);
+               (long long)d->n_preint, (long long)d->preint_samples, (long long)d->n_preint_bad);
         printf("  factor prediction from the truth (%ld factors): max error %.3g m, %.3g m/s, "
                "%.3g rad\n",
                pc.n_checked, pc.max_pos_err, pc.max_vel_err, pc.max_att_err);
-        if (o.check_preint > 0.0) {
-            int pass = pc.n_checked > 0 && pc.max_pos_err <= o.check_preint;
+        if (o->check_preint > 0.0) {
+            int pass = pc.n_checked > 0 && pc.max_pos_err <= o->check_preint;
             printf("%s: factor prediction error %.3g m, bound %.3g m\n",
                    pass ? "PREINT CHECK PASSED" : "PREINT CHECK FAILED", pc.max_pos_err,
-                   o.check_preint);
+                   o->check_preint);
             ok = ok && pass;
         }
-    } else if (o.check_preint > 0.0) {
+    } else if (o->check_preint > 0.0) {
         printf("PREINT CHECK FAILED: no preintegrated factor in the logs\n");
         ok = 0;
     }
-    if (o.plots_dir != NULL) {
+    if (o->plots_dir != NULL) {
         char path[1024];
-        mkdir(o.plots_dir, 0777);
-        snprintf(path, sizeof path, "%s/errors.csv", o.plots_dir);
+        mkdir(o->plots_dir, 0777);
+        snprintf(path, sizeof path, "%s/errors.csv", o->plots_dir);
         write_csv(path, ep, n);
-        snprintf(path, sizeof path, "%s/gnss.csv", o.plots_dir);
-        write_gnss_csv(path, &d);
-        if (make_plots(&o, &d) != 0) {
+        snprintf(path, sizeof path, "%s/gnss.csv", o->plots_dir);
+        write_gnss_csv(path, d);
+        if (make_plots(o, d) != 0) {
             fprintf(stderr, "se23-report: plotting failed (needs %s with matplotlib)\n",
-                    o.python);
+                    o->python);
             ok = 0;
         } else {
             printf("\n  plots: %s/{trajectory,errors,biases,nees}.png  (data: %s/errors.csv)\n",
-                   o.plots_dir, o.plots_dir);
+                   o->plots_dir, o->plots_dir);
         }
     }
-    if (o.check) {
+    if (o->check) {
         const group_t checked[3] = {G_POS, G_VEL, G_ATT};
         double mean9 = n_nees9 ? nees9 / (double)n_nees9 / 9.0 : NAN;
         for (k = 0; k < 3; k++) {
             int c;
             for (c = 0; c < 3; c++) {
-                if (gs[checked[k]].frac_in[c] < o.check_frac) {
+                if (gs[checked[k]].frac_in[c] < o->check_frac) {
                     printf("CHECK FAILED: group %d axis %d within 3 sigma in %.1f%% < %.1f%%\n",
-                           k, c, 100.0 * gs[checked[k]].frac_in[c], 100.0 * o.check_frac);
+                           k, c, 100.0 * gs[checked[k]].frac_in[c], 100.0 * o->check_frac);
                     ok = 0;
                 }
             }
         }
-        if (!(mean9 >= o.check_nees_lo && mean9 <= o.check_nees_hi)) {
+        if (!(mean9 >= o->check_nees_lo && mean9 <= o->check_nees_hi)) {
             printf("CHECK FAILED: mean NEES/dof (9) %.3f outside [%.2f, %.2f]\n", mean9,
-                   o.check_nees_lo, o.check_nees_hi);
+                   o->check_nees_lo, o->check_nees_hi);
             ok = 0;
         }
-        if (n_nees15 > 0 && !(nees15 / (double)n_nees15 / 15.0 >= o.check_nees_lo &&
-                              nees15 / (double)n_nees15 / 15.0 <= o.check_nees_hi)) {
+        if (n_nees15 > 0 && !(nees15 / (double)n_nees15 / 15.0 >= o->check_nees_lo &&
+                              nees15 / (double)n_nees15 / 15.0 <= o->check_nees_hi)) {
             printf("CHECK FAILED: mean NEES/dof (15) %.3f outside [%.2f, %.2f]\n",
-                   nees15 / (double)n_nees15 / 15.0, o.check_nees_lo, o.check_nees_hi);
+                   nees15 / (double)n_nees15 / 15.0, o->check_nees_lo, o->check_nees_hi);
             ok = 0;
         }
         printf("%s\n", ok ? "CHECK PASSED" : "CHECK FAILED");
     }
-    if (o.check_max_pos > 0.0) {
-        int pass = gs[G_POS].final_norm <= o.check_max_pos;
+    if (o->check_max_pos > 0.0) {
+        int pass = gs[G_POS].final_norm <= o->check_max_pos;
         printf("%s: final position error %.3g m, bound %.3g m\n",
                pass ? "POSITION CHECK PASSED" : "POSITION CHECK FAILED", gs[G_POS].final_norm,
-               o.check_max_pos);
+               o->check_max_pos);
         ok = ok && pass;
     }
     free(ep);
+    return ok;
+}
+
+/*
+ * Exit status: 0 every check passed; 1 a check failed, a log cannot be read,
+ * or there is nothing to compare; 2 usage; 3 every check passed but bytes of
+ * a corrupt log were skipped (tools/lcm/logfile.h).
+ */
+int main(int argc, char **argv)
+{
+    rep_opts_t o;
+    log_data_t d;
+    int rc = 0, k;
+
+    memset(&d, 0, sizeof d);
+    if (parse_args(argc, argv, &o) != 0) {
+        usage(stderr);
+        free((void *)o.logs);
+        return 2;
+    }
+    for (k = 0; k < o.n_logs && rc == 0; k++) {
+        rc = log_read(o.logs[k], &d) != 0;
+    }
+    if (rc == 0 && d.n_truth == 0) {
+        fprintf(stderr, "se23-report: no truth in the log%s\n", o.n_logs > 1 ? "s" : "");
+        rc = 1;
+    }
+    if (rc == 0) {
+        rc = report(&o, &d) ? 0 : 1;
+    }
+    if (rc == 0 && d.bytes_skipped > 0) {
+        printf("LOG CORRUPT: %lld bytes skipped in %lld places (exit status 3)\n",
+               (long long)d.bytes_skipped, (long long)d.corrupt_spans);
+        rc = 3;
+    }
     free((void *)o.logs);
     log_free(&d);
-    return ok ? 0 : 1;
+    return rc;
 }
