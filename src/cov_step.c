@@ -135,14 +135,15 @@ static void acc_input_terms(const step_t *s, int i, int j, se23_mat3_t *E)
         if (i == PHI && k == ACC) {
             continue;
         }
-        se23_mat3_t Zq; /* Z_jk + q_k Bt_jk, Z = 0 without bias states */
+        const se23_real_t qk = (k == GYR) ? s->q->qg : s->q->qa;
         if (s->bias != 0) {
+            se23_mat3_t Zq; /* Z_jk + q_k Bt_jk */
             blk_load(s->out, s->stride, 3 * j, 9 + 3 * k, &Zq);
-            se23_m3_axpy(&Zq, k == GYR ? s->q->qg : s->q->qa, &s->Bt->blk[j][k], &Zq);
+            se23_m3_axpy(&Zq, qk, &s->Bt->blk[j][k], &Zq);
+            se23_m3_acc_mul_nt(E, &s->Bt->blk[i][k], &Zq);
         } else {
-            se23_m3_scale(&s->Bt->blk[j][k], k == GYR ? s->q->qg : s->q->qa, &Zq);
+            se23_m3_acc_mul_nt_scaled(E, &s->Bt->blk[i][k], qk, &s->Bt->blk[j][k]);
         }
-        se23_m3_acc_mul_nt(E, &s->Bt->blk[i][k], &Zq);
     }
 }
 

@@ -261,6 +261,26 @@ void se23_m3_acc_mul_nt(se23_mat3_t *C, const se23_mat3_t *A, const se23_mat3_t 
     C->m[2][2] = C->m[2][2] + a20 * b20 + a21 * b21 + a22 * b22;
 }
 
+void se23_m3_acc_mul_nt_scaled(se23_mat3_t *C, const se23_mat3_t *A, se23_real_t s,
+                               const se23_mat3_t *B)
+{
+    const se23_real_t a00 = A->m[0][0], a01 = A->m[0][1], a02 = A->m[0][2];
+    const se23_real_t a10 = A->m[1][0], a11 = A->m[1][1], a12 = A->m[1][2];
+    const se23_real_t a20 = A->m[2][0], a21 = A->m[2][1], a22 = A->m[2][2];
+    const se23_real_t b00 = s * B->m[0][0], b01 = s * B->m[0][1], b02 = s * B->m[0][2];
+    const se23_real_t b10 = s * B->m[1][0], b11 = s * B->m[1][1], b12 = s * B->m[1][2];
+    const se23_real_t b20 = s * B->m[2][0], b21 = s * B->m[2][1], b22 = s * B->m[2][2];
+    C->m[0][0] = C->m[0][0] + a00 * b00 + a01 * b01 + a02 * b02;
+    C->m[0][1] = C->m[0][1] + a00 * b10 + a01 * b11 + a02 * b12;
+    C->m[0][2] = C->m[0][2] + a00 * b20 + a01 * b21 + a02 * b22;
+    C->m[1][0] = C->m[1][0] + a10 * b00 + a11 * b01 + a12 * b02;
+    C->m[1][1] = C->m[1][1] + a10 * b10 + a11 * b11 + a12 * b12;
+    C->m[1][2] = C->m[1][2] + a10 * b20 + a11 * b21 + a12 * b22;
+    C->m[2][0] = C->m[2][0] + a20 * b00 + a21 * b01 + a22 * b02;
+    C->m[2][1] = C->m[2][1] + a20 * b10 + a21 * b11 + a22 * b12;
+    C->m[2][2] = C->m[2][2] + a20 * b20 + a21 * b21 + a22 * b22;
+}
+
 /* Column j of v^ A is v x A_j. */
 void se23_m3_acc_skew_mul(se23_mat3_t *C, se23_real_t s, const se23_vec3_t *v,
                           const se23_mat3_t *A)

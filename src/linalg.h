@@ -71,6 +71,9 @@ se23_real_t se23_m3_det(const se23_mat3_t *A);
 void se23_m3_acc_mul(se23_mat3_t *C, const se23_mat3_t *A, const se23_mat3_t *B);
 /** C += A B^T [27] */
 void se23_m3_acc_mul_nt(se23_mat3_t *C, const se23_mat3_t *A, const se23_mat3_t *B);
+/** C += s A B^T [27 + 9] */
+void se23_m3_acc_mul_nt_scaled(se23_mat3_t *C, const se23_mat3_t *A, se23_real_t s,
+                               const se23_mat3_t *B);
 /** C += s v^ A [18 + 3] */
 void se23_m3_acc_skew_mul(se23_mat3_t *C, se23_real_t s, const se23_vec3_t *v,
                           const se23_mat3_t *A);
