@@ -42,6 +42,14 @@ note_fail() {
     FAILED_NAMES="$FAILED_NAMES $1"
 }
 
+# skip NAME REASON: a check this machine cannot run; counted in the closing
+# line and named above it.
+skip() {
+    SKIPPED=$((SKIPPED + 1))
+    SKIPPED_NAMES="$SKIPPED_NAMES $1"
+    printf '  skip  %-44s (%s)\n' "$1" "$2"
+}
+
 # check NAME CMD...: one pass or one fail.
 check() {
     name=$1

@@ -128,5 +128,5 @@ h_live() {
 if unshare -rn true 2>/dev/null; then
     check harness-live-udpm-valgrind h_live
 else
-    echo "  skip  harness-live-udpm-valgrind (no user namespaces here)"
+    skip harness-live-udpm-valgrind "no user namespaces here"
 fi
