@@ -264,17 +264,14 @@ se23_status_t se23_gauss_predict(const se23_earth_model_t *model,
     se23_imu_sample_t c = *s; /* corrected inputs */
     se23_v3_axpy(&s->w_ib_b, SE23_R(1), &g->b_g, &c.w_ib_b);
     se23_v3_axpy(&s->f_b, SE23_R(1), &g->b_a, &c.f_b);
+    /* The step checks the sample; its outputs are locals until the end. */
+    se23_pose_t U, T_next;
+    se23_increment_parts_t parts;
     se23_step_noise_t q;
-    st = se23_imu_sample_check(&c, model->dt_max);
+    st = se23_imu_step_ups(model, &g->T, &c, &T_next, &U, &parts);
     if (st == SE23_OK) {
         st = se23_step_noise(noise, c.dt, &q);
     }
-    if (st != SE23_OK) {
-        return st;
-    }
-    se23_pose_t U, T_next;
-    se23_increment_parts_t parts;
-    st = se23_imu_step_ups(model, &g->T, &c, &T_next, &U, &parts);
     if (st != SE23_OK) {
         return st;
     }

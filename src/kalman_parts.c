@@ -121,7 +121,7 @@ static void innovation_cov(const se23_meas_t *y, const int *blk, int nb,
                            const se23_real_t *C, se23_real_t *L)
 {
     for (int q = 0; q < y->m; ++q) {
-        se23_real_t *lq = &L[se23_tri(q)];
+        se23_real_t *lq = &L[SE23_COV_TRI(q)];
         for (int r = 0; r <= q; ++r) {
             const se23_real_t *h = &y->H[S * r];
             se23_real_t s = y->R[M * r + q];
@@ -142,7 +142,7 @@ static void innovation_cov(const se23_meas_t *y, const int *blk, int nb,
 static void forward(const se23_real_t *L, int m, se23_real_t *x)
 {
     for (int r = 0; r < m; ++r) {
-        const se23_real_t *lr = &L[se23_tri(r)];
+        const se23_real_t *lr = &L[SE23_COV_TRI(r)];
         se23_real_t s = x[r];
         for (int k = 0; k < r; ++k) {
             s = se23_fma(-lr[k], x[k], s);
@@ -155,7 +155,7 @@ static void forward(const se23_real_t *L, int m, se23_real_t *x)
  * past the m rows (the padding). */
 static se23_real_t l_at(const se23_real_t *L, int m, int r, int k)
 {
-    return (r < m) ? L[se23_tri(r) + k] : SE23_R(0);
+    return (r < m) ? L[SE23_COV_TRI(r) + k] : SE23_R(0);
 }
 
 /* Columns g..g+2 of U minus the part of the earlier columns h..h+2:

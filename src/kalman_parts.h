@@ -14,7 +14,7 @@
  * whose sin/cos may take newlib's large-argument reduction.
  *
  * Packed storage: element (i, j), j <= i, of a lower triangle at
- * L[se23_tri(i) + j].
+ * L[SE23_COV_TRI(i) + j] (cov.h).
  */
 #ifndef SE23_KALMAN_PARTS_H
 #define SE23_KALMAN_PARTS_H
@@ -41,13 +41,6 @@
 #define SE23_KALMAN_CORR_MAX SE23_R(1e18)
 #define SE23_KALMAN_MEAN_MAX (SE23_R(FLT_MAX) / SE23_R(4))
 #endif
-
-/** Offset of row i of a packed lower triangle, 0 <= i < SE23_MEAS_MMAX. */
-static inline int se23_tri(int i)
-{
-    static const int offset[SE23_MEAS_MMAX] = {0, 1, 3, 6, 10, 15, 21, 28, 36};
-    return offset[i];
-}
 
 /**
  * se23_cov_check (cov.h) of the leading m x m block of A (row stride
