@@ -112,6 +112,7 @@ static traj_raw_t raw_nav(ld_t t)
 
 static const char *const names[TRAJ_COUNT] = {"static", "uav", "car", "nav"};
 static const double durations[TRAJ_COUNT] = {60.0, 60.0, 120.0, 3600.0};
+static const double ramps[TRAJ_COUNT] = {1.0, 5.0, 10.0, 60.0};
 
 const char *traj_name(traj_scenario_t s)
 {
@@ -132,6 +133,11 @@ int traj_find(const char *name)
 double traj_default_duration(traj_scenario_t s)
 {
     return ((int)s >= 0 && (int)s < TRAJ_COUNT) ? durations[s] : 0.0;
+}
+
+double traj_ramp_duration(traj_scenario_t s)
+{
+    return ((int)s >= 0 && (int)s < TRAJ_COUNT) ? ramps[s] : 1.0;
 }
 
 traj_point_t traj_eval(traj_scenario_t s, ld_t t)
@@ -169,5 +175,36 @@ traj_point_t traj_eval(traj_scenario_t s, ld_t t)
     pt.w_nb_b.v[0] = r.roll.d1 - r.yaw.d1 * sp;
     pt.w_nb_b.v[1] = r.pitch.d1 * cr + r.yaw.d1 * sr * cp;
     pt.w_nb_b.v[2] = -r.pitch.d1 * sr + r.yaw.d1 * cr * cp;
+    return pt;
+}
+
+traj_point_t traj_eval_start(traj_scenario_t s, ld_t rest, ld_t t)
+{
+    const ld_t ramp = (ld_t)traj_ramp_duration(s);
+    ld_t tau, d1, d2; /* tau(t), tau'(t), tau''(t) */
+    traj_point_t pt;
+    int i;
+    if (!(rest > 0.0L)) {
+        return traj_eval(s, t);
+    }
+    if (t <= rest) {
+        tau = d1 = d2 = 0.0L;
+    } else if (t < rest + ramp) {
+        ld_t u = (t - rest) / ramp;
+        ld_t u2 = u * u;
+        tau = ramp * u2 * u2 * (2.5L - 3.0L * u + u2);
+        d1 = u2 * u * (10.0L - 15.0L * u + 6.0L * u2);
+        d2 = 30.0L * u2 * (1.0L - u) * (1.0L - u) / ramp;
+    } else {
+        tau = t - rest - 0.5L * ramp;
+        d1 = 1.0L;
+        d2 = 0.0L;
+    }
+    pt = traj_eval(s, tau);
+    for (i = 0; i < 3; i++) {
+        pt.a.v[i] = pt.a.v[i] * d1 * d1 + pt.v.v[i] * d2;
+        pt.v.v[i] *= d1;
+        pt.w_nb_b.v[i] *= d1;
+    }
     return pt;
 }

@@ -40,4 +40,29 @@ double traj_default_duration(traj_scenario_t s);
 /** The reference state of scenario s at time t [s]. */
 traj_point_t traj_eval(traj_scenario_t s, ld_t t);
 
+/**
+ * Length [s] of the ramp that takes scenario s from rest into its motion
+ * (traj_eval_start): 5 s uav, 10 s car, 60 s nav (peak accelerations about
+ * 2.2, 2.8 and 3.1 m/s^2 during the ramp), 1 s static (nothing moves).
+ */
+double traj_ramp_duration(traj_scenario_t s);
+
+/**
+ * Scenario s after a stationary start of rest [s]. None of the scenarios
+ * starts at rest (uav ~6 m/s, car ~15 m/s, nav 100 m/s at t = 0), so the
+ * scenario runs on a warped clock tau(t):
+ *   t < rest:                      tau = 0, at rest at the scenario's initial pose;
+ *   rest <= t < rest + ramp:       tau' = u^3 (10 - 15 u + 6 u^2), u = (t - rest) / ramp,
+ *                                  tau = ramp u^4 (5/2 - 3 u + u^2);
+ *   t >= rest + ramp:              tau' = 1, tau = t - rest - ramp/2,
+ * ramp = traj_ramp_duration(s). The state is the scenario's at tau with the
+ * chain rule: v = P'(tau) tau', a = P''(tau) tau'^2 + P'(tau) tau'',
+ * w_nb_b = W(tau) tau'. The path and the attitude history are the
+ * scenario's (the car still heads along its velocity); tau' rises from 0 to
+ * 1 and tau'' is 0 at both ends of the ramp, so position, attitude,
+ * velocity, body rate and acceleration are continuous and the vehicle
+ * starts from rest smoothly. rest <= 0 gives traj_eval(s, t) exactly.
+ */
+traj_point_t traj_eval_start(traj_scenario_t s, ld_t rest, ld_t t);
+
 #endif /* SIM_TRAJ_H */
