@@ -11,6 +11,12 @@
  * zero-order-hold model, independent of the library. The published sample
  * adds the IMU errors (imu_err.h).
  *
+ * GNSS fixes are of an antenna at a body-frame lever arm from the IMU
+ * (--lever), and can arrive late (--gnss-latency): a fix keeps the time it
+ * refers to but is published after the IMU sample at that time plus the
+ * latency, from a small fixed queue. --stationary prepends a rest phase
+ * (traj_eval_start).
+ *
  * Run with --help for the options.
  */
 #define _POSIX_C_SOURCE 200809L
@@ -32,6 +38,7 @@
 
 #define DEG_L (3.141592653589793238462643383279502884L / 180.0L)
 #define H_MAX 1.25e-3 /* largest RK4 sub-step [s] */
+#define GNSS_PENDING_MAX 64 /* fixes waiting for their latency to pass */
 
 typedef struct {
     int scenario;
@@ -43,6 +50,9 @@ typedef struct {
     double gnss_rate;
     double gnss_sp[3];
     double gnss_sv[3];
+    double lever[3];      /* GNSS antenna w.r.t. the IMU, body [m] */
+    double gnss_latency;  /* [s] */
+    double stationary;    /* rest before the motion [s] */
     double truth_rate;
     int64_t seed;
     double init_sigma[3]; /* attitude [deg], velocity [m/s], position [m] */
@@ -65,6 +75,14 @@ static void usage(FILE *f)
             "  --gnss-rate HZ                  GNSS fixes, 0 = none (5)\n"
             "  --gnss-sigma-p X,Y,Z            position noise [m] (1.5,1.5,3)\n"
             "  --gnss-sigma-v X,Y,Z            velocity noise [m/s] (0.1,0.1,0.2)\n"
+            "  --lever X,Y,Z                   GNSS antenna position w.r.t. the IMU, body\n"
+            "                                  frame FRD [m] (0,0,0)\n"
+            "  --gnss-latency S                each fix is published after the IMU sample at\n"
+            "                                  its time + S [s] (0); fixes not due by the end\n"
+            "                                  of the run are not published\n"
+            "  --stationary S                  at rest for S seconds, then a smooth ramp into\n"
+            "                                  the scenario's motion [s] (0); the default\n"
+            "                                  --duration grows by S\n"
             "  --truth-rate HZ                 truth messages (50)\n"
             "  --seed N                        random seed (1)\n"
             "  --init-sigma DEG,MPS,M          initial attitude/velocity/position error\n"
@@ -94,6 +112,9 @@ static int parse_args(int argc, char **argv, sim_opts_t *o)
         {"--gnss-rate", HOPT_DOUBLE, &o->gnss_rate, 0.0, inf, NULL},
         {"--gnss-sigma-p", HOPT_VEC3, o->gnss_sp, 1e-6, inf, NULL},
         {"--gnss-sigma-v", HOPT_VEC3, o->gnss_sv, 1e-6, inf, NULL},
+        {"--lever", HOPT_VEC3, o->lever, -100.0, 100.0, NULL},
+        {"--gnss-latency", HOPT_DOUBLE, &o->gnss_latency, 0.0, 60.0, NULL},
+        {"--stationary", HOPT_DOUBLE, &o->stationary, 0.0, 86400.0, NULL},
         {"--truth-rate", HOPT_DOUBLE, &o->truth_rate, 1e-3, inf, NULL},
         {"--seed", HOPT_I64, &o->seed, 0, 0, NULL},
         {"--init-sigma", HOPT_VEC3, o->init_sigma, 0.0, inf, NULL},
@@ -115,6 +136,9 @@ static int parse_args(int argc, char **argv, sim_opts_t *o)
     o->gnss_sv[0] = 0.1;
     o->gnss_sv[1] = 0.1;
     o->gnss_sv[2] = 0.2;
+    memset(o->lever, 0, sizeof o->lever);
+    o->gnss_latency = 0.0;
+    o->stationary = 0.0;
     o->truth_rate = 50.0;
     o->seed = 1;
     o->init_sigma[0] = 1.0;
@@ -129,7 +153,7 @@ static int parse_args(int argc, char **argv, sim_opts_t *o)
         return -1;
     }
     if (o->duration < 0.0) {
-        o->duration = traj_default_duration((traj_scenario_t)o->scenario);
+        o->duration = traj_default_duration((traj_scenario_t)o->scenario) + o->stationary;
     }
     if (o->speed < 0.0) {
         o->speed = (strncmp(o->url, "file://", 7) == 0) ? 0.0 : 1.0;
@@ -213,7 +237,17 @@ static void publish_info(lcm_t *lc, const char *ch, const sim_opts_t *o, const t
     m.latitude_rad = o->lat_deg * (3.14159265358979323846 / 180.0);
     ld_vec3_to(&env->g_n, m.g_n);
     ld_vec3_to(&env->w_ie_n, m.w_ie_n);
+    memcpy(m.lever_b, o->lever, sizeof m.lever_b);
+    m.gnss_latency_s = o->gnss_latency;
+    m.stationary_s = o->stationary;
+    m.ramp_s = o->stationary > 0.0 ? traj_ramp_duration((traj_scenario_t)o->scenario) : 0.0;
     se23lcm_sim_info_publish(lc, ch, &m);
+}
+
+/* The reference at t [s]: the scenario, after the rest phase if any. */
+static traj_point_t ref_eval(const sim_opts_t *o, ld_t t)
+{
+    return traj_eval_start((traj_scenario_t)o->scenario, (ld_t)o->stationary, t);
 }
 
 /*
@@ -227,7 +261,7 @@ static void publish_info(lcm_t *lc, const char *ch, const sim_opts_t *o, const t
 static void true_inputs(const sim_opts_t *o, const truth_env_t *env, const truth_state_t *x,
                         ld_t t0, ld_t dt, double w_out[3], double f_out[3])
 {
-    traj_point_t m = traj_eval((traj_scenario_t)o->scenario, t0 + 0.5L * dt);
+    traj_point_t m = ref_eval(o, t0 + 0.5L * dt);
     ld_vec3_t w_ie_b = ld_tmul_v(&m.R, &env->w_ie_n);
     ld_vec3_t w = ld_add(&m.w_nb_b, &w_ie_b);
     ld_vec3_t cor = ld_cross(&env->w_ie_n, &m.v);
@@ -240,7 +274,7 @@ static void true_inputs(const sim_opts_t *o, const truth_env_t *env, const truth
     }
     f = ld_tmul_v(&m.R, &fn);
     if (o->track) {
-        traj_point_t r = traj_eval((traj_scenario_t)o->scenario, t0);
+        traj_point_t r = ref_eval(o, t0);
         ld_mat3_t E = ld_mul_tn(&x->R, &r.R);
         ld_vec3_t e_R = ld_log(&E);
         ld_vec3_t e_v = ld_sub(&r.v, &x->v);
@@ -257,22 +291,74 @@ static void true_inputs(const sim_opts_t *o, const truth_env_t *env, const truth
     ld_vec3_to(&f, f_out);
 }
 
-static void publish_gnss(lcm_t *lc, int64_t t_ns, int64_t seq, const sim_opts_t *o,
-                         const truth_state_t *x, rng_t *rng)
+/*
+ * The fix at t_ns of the antenna at the lever arm l (body frame) from the
+ * IMU, the truth x being at t_ns: position p + R l, velocity
+ * v + R (w_nb_b x l), plus the noise. w_nb_b = w_ib_b - R^T w_ie_n is the
+ * body rate relative to the nav frame (Earth-fixed NED: no transport rate),
+ * w_ib_b the true rate held over the IMU interval ending at t_ns: exactly
+ * R^T dR/dt of the truth there (truth.h: dR/dt = -W R + R w_ib_b^). An INS
+ * that forms the lever-arm velocity from the bias-corrected gyro w_ib_b
+ * (the library's filter) neglects (R^T w_ie_n) x l, at most
+ * 7.3e-5 rad/s * |l| (7e-5 m/s for a 1 m lever), far below GNSS noise.
+ * The noise is drawn in the same order with or without a lever arm.
+ */
+static void make_gnss(se23lcm_gnss_fix *m, int64_t t_ns, int64_t seq, const sim_opts_t *o,
+                      const truth_env_t *env, const truth_state_t *x, const ld_vec3_t *w_ib_b,
+                      rng_t *rng)
 {
-    se23lcm_gnss_fix m;
+    ld_vec3_t l = ld_vec3_from(o->lever);
+    ld_vec3_t w_ie_b = ld_tmul_v(&x->R, &env->w_ie_n);
+    ld_vec3_t w_nb_b = ld_sub(w_ib_b, &w_ie_b);
+    ld_vec3_t wxl = ld_cross(&w_nb_b, &l);
+    ld_vec3_t dp = ld_mul_v(&x->R, &l);
+    ld_vec3_t dv = ld_mul_v(&x->R, &wxl);
     int i;
-    memset(&m, 0, sizeof m);
-    m.t_ns = t_ns;
-    m.seq = seq;
+    memset(m, 0, sizeof *m);
+    m->t_ns = t_ns;
+    m->seq = seq;
     for (i = 0; i < 3; i++) {
-        m.p_n[i] = (double)x->p.v[i] + o->gnss_sp[i] * rng_normal(rng);
-        m.v_n[i] = (double)x->v.v[i] + o->gnss_sv[i] * rng_normal(rng);
-        m.sigma_p[i] = o->gnss_sp[i];
-        m.sigma_v[i] = o->gnss_sv[i];
+        m->p_n[i] = (double)(x->p.v[i] + dp.v[i]) + o->gnss_sp[i] * rng_normal(rng);
+        m->v_n[i] = (double)(x->v.v[i] + dv.v[i]) + o->gnss_sv[i] * rng_normal(rng);
+        m->sigma_p[i] = o->gnss_sp[i];
+        m->sigma_v[i] = o->gnss_sv[i];
     }
-    m.has_vel = 1;
-    se23lcm_gnss_fix_publish(lc, HARNESS_CH_GNSS, &m);
+    m->has_vel = 1;
+}
+
+/*
+ * Fixes waiting to be published: a ring in time order (fixes are made in
+ * time order and all have the same latency), each due once the IMU sample
+ * at its t_ns + latency has been published.
+ */
+typedef struct {
+    se23lcm_gnss_fix fix[GNSS_PENDING_MAX];
+    int64_t due_ns[GNSS_PENDING_MAX];
+    int head, count;
+} gnss_queue_t;
+
+/* Queues m, due at due_ns; -1 if the queue is full. */
+static int gnss_push(gnss_queue_t *q, const se23lcm_gnss_fix *m, int64_t due_ns)
+{
+    int slot;
+    if (q->count >= GNSS_PENDING_MAX) {
+        return -1;
+    }
+    slot = (q->head + q->count) % GNSS_PENDING_MAX;
+    q->fix[slot] = *m;
+    q->due_ns[slot] = due_ns;
+    q->count++;
+    return 0;
+}
+
+/* Publishes, oldest first, every queued fix due at or before t_ns. */
+static void gnss_release(gnss_queue_t *q, lcm_t *lc, int64_t t_ns)
+{
+    while (q->count > 0 && q->due_ns[q->head] <= t_ns) {
+        se23lcm_gnss_fix_publish(lc, HARNESS_CH_GNSS, &q->fix[q->head]);
+        q->head = (q->head + 1) % GNSS_PENDING_MAX;
+        q->count--;
+    }
 }
 
 static int64_t every(double base_rate, double rate)
@@ -296,7 +382,8 @@ int main(int argc, char **argv)
     imu_err_t err;
     rng_t rng_gnss, rng_init;
     lcm_t *lc;
-    int64_t dt_ns, n, k, n_truth, n_gnss, wall0, gnss_seq = 0;
+    int64_t dt_ns, n, k, n_truth, n_gnss, wall0, latency_ns, gnss_seq = 0;
+    gnss_queue_t gq;
     harness_progress_t pr;
     int nsub;
     double dt;
@@ -305,6 +392,24 @@ int main(int argc, char **argv)
         usage(stderr);
         return 2;
     }
+    dt_ns = llround(1e9 / o.imu_rate);
+    dt = (double)dt_ns * 1e-9;
+    n = llround(o.duration * 1e9 / (double)dt_ns);
+    nsub = (int)ceil(dt / H_MAX - 1e-9);
+    n_truth = every(o.imu_rate, o.truth_rate);
+    n_gnss = o.gnss_rate > 0.0 ? every(o.imu_rate, o.gnss_rate) : 0;
+    latency_ns = llround(o.gnss_latency * 1e9);
+    /* fixes pending at once: those made in (t - latency - dt, t], at most
+     * ceil((latency + dt) / fix period) */
+    if (n_gnss > 0 &&
+        (latency_ns + dt_ns + n_gnss * dt_ns - 1) / (n_gnss * dt_ns) > GNSS_PENDING_MAX) {
+        fprintf(stderr,
+                "se23-sim: --gnss-latency %g s at %g Hz would hold more than %d fixes "
+                "pending\n",
+                o.gnss_latency, (double)1e9 / (double)(n_gnss * dt_ns), GNSS_PENDING_MAX);
+        return 2;
+    }
+    memset(&gq, 0, sizeof gq);
     lc = lcm_create(o.url);
     if (lc == NULL) {
         fprintf(stderr, "se23-sim: cannot open LCM URL %s\n", o.url);
@@ -312,18 +417,12 @@ int main(int argc, char **argv)
     }
     harness_catch_stop_signals();
 
-    dt_ns = llround(1e9 / o.imu_rate);
-    dt = (double)dt_ns * 1e-9;
-    n = llround(o.duration * 1e9 / (double)dt_ns);
-    nsub = (int)ceil(dt / H_MAX - 1e-9);
-    n_truth = every(o.imu_rate, o.truth_rate);
-    n_gnss = o.gnss_rate > 0.0 ? every(o.imu_rate, o.gnss_rate) : 0;
     env = truth_env_ned(o.lat_deg * DEG_L, o.earth);
     imu_err_init(&err, harness_imu_profile(o.profile), (uint64_t)o.seed);
     rng_seed(&rng_gnss, (uint64_t)o.seed ^ 0x5a5a5a5a5a5a5a5aULL);
     rng_seed(&rng_init, (uint64_t)o.seed ^ 0x0123456789abcdefULL);
 
-    r0 = traj_eval((traj_scenario_t)o.scenario, 0.0L);
+    r0 = ref_eval(&o, 0.0L);
     x.R = r0.R;
     x.v = r0.v;
     x.p = r0.p;
@@ -358,8 +457,15 @@ int main(int argc, char **argv)
             publish_truth(lc, s.t_ns, k, &x, b_g, b_a);
         }
         if (n_gnss > 0 && k % n_gnss == 0) {
-            publish_gnss(lc, s.t_ns, ++gnss_seq, &o, &x, &rng_gnss);
+            se23lcm_gnss_fix g;
+            make_gnss(&g, s.t_ns, ++gnss_seq, &o, &env, &x, &w_ld, &rng_gnss);
+            if (gnss_push(&gq, &g, s.t_ns + latency_ns) != 0) {
+                fprintf(stderr, "se23-sim: GNSS queue full\n"); /* excluded above */
+                lcm_destroy(lc);
+                return 1;
+            }
         }
+        gnss_release(&gq, lc, s.t_ns); /* after the sample and its truth */
         if (o.progress) {
             progress(&pr, 0, (double)s.t_ns * 1e-9, (double)n * dt);
         }
