@@ -130,3 +130,63 @@ if unshare -rn true 2>/dev/null; then
 else
     skip harness-live-udpm-valgrind "no user namespaces here"
 fi
+
+# 6. Simulator options, read back from the log by tools/lcm/simcheck.c.
+#    A GNSS antenna at a lever arm, fixes 0.333 s late (not a whole number
+#    of IMU periods), noise-free: every fix is the truth moved by R l, its
+#    velocity by R (w_nb x l) (w_nb from the IMU sample: --imu perfect),
+#    published right after the first IMU sample at or after its time +
+#    0.333 s, none missing, SIM_INFO recording both; sim and checker under
+#    valgrind. The same log checked without the lever arm, or without the
+#    latency, must fail.
+H_LEVER=2,-1,-3
+h_sim_lever_latency() {
+    $HVG "$HB/se23-sim" --duration 20 --imu perfect --gnss-sigma-p 1e-6,1e-6,1e-6 \
+        --gnss-sigma-v 1e-6,1e-6,1e-6 --lever $H_LEVER --gnss-latency 0.333 \
+        --url "file://$HW/lever.sim.log?mode=w" &&
+        $HVG "$HB/se23-simcheck" --lever $H_LEVER --latency 0.333 "$HW/lever.sim.log"
+}
+check harness-sim-lever-latency h_sim_lever_latency
+# h_fails OUT PATTERN CMD...: CMD exits 1 and says PATTERN (output in OUT).
+h_fails() {
+    hf_out="$HW/$1"
+    hf_pat=$2
+    shift 2
+    "$@" >"$hf_out" 2>&1
+    hf_rc=$?
+    cat "$hf_out"
+    echo "exit status $hf_rc (expected 1)"
+    [ "$hf_rc" -eq 1 ] && grep -q -- "$hf_pat" "$hf_out"
+}
+h_sim_lever_latency_can_fail() {
+    h_fails lever-nolever.txt "^FAIL lever position" \
+        "$HB/se23-simcheck" --latency 0.333 "$HW/lever.sim.log" &&
+        h_fails lever-nolatency.txt "^FAIL latency late" \
+            "$HB/se23-simcheck" --lever $H_LEVER "$HW/lever.sim.log"
+}
+check harness-sim-lever-latency-can-fail h_sim_lever_latency_can_fail
+#    A stationary start of 10 s: the truth at rest (|v|, |p - p0|, the angle
+#    to R0 below 1e-9) for t <= 10 s, moving after, no velocity jump on the
+#    ramp (|dv/dt| between truths <= 10 m/s^2); a log without the rest
+#    phase must fail, and so must the jump check with a bound below the
+#    flight's acceleration. The INS stays consistent through the rest phase.
+h_sim_stationary() {
+    "$HB/se23-sim" --scenario "$1" --duration 30 --stationary 10 \
+        --url "file://$HW/rest-$1.sim.log?mode=w" &&
+        "$HB/se23-simcheck" --stationary 10 "$HW/rest-$1.sim.log"
+}
+check harness-sim-stationary-uav h_sim_stationary uav
+check harness-sim-stationary-car h_sim_stationary car
+h_sim_stationary_can_fail() {
+    h_fails rest-none.txt "^FAIL rest moving" \
+        "$HB/se23-simcheck" --stationary 10 "$HW/e2e-uav.sim.log" &&
+        h_fails rest-jump.txt "^FAIL smooth" \
+            "$HB/se23-simcheck" --stationary 10 --max-accel 1 "$HW/rest-uav.sim.log"
+}
+check harness-sim-stationary-can-fail h_sim_stationary_can_fail
+h_stationary_consistent() {
+    h_run e2e-rest --scenario uav --duration 40 --seed 11 --stationary 10 -- --preint 1 &&
+        "$HB/se23-report" --check "$HW/e2e-rest.sim.log" "$HW/e2e-rest.ins.log" &&
+        grep -q "^  imu_used  *8000\$" "$HW/e2e-rest.txt"
+}
+check harness-e2e-uav-stationary h_stationary_consistent
