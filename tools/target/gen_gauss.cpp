@@ -806,12 +806,25 @@ void add_kalman(Gens &g)
                           "se23_meas_vel_nav_lever", "se23_meas_zero_rate"}) {
         g[n].scale = scale_meas();
     }
-    g["se23_kalman_update"].scale = scale_concat({{TV_GAUSS_REALS - 225, scale_concat({{15, scale_pose()},
-                                                                                      {3, scale_blocks({3})},
-                                                                                      {3, scale_blocks({3})},
-                                                                                      {1, scale_blocks({1})}})},
-                                                  {225, scale_cov(15)},
-                                                  {1, scale_blocks({1})}});
+    const Scale update_out = scale_concat({{TV_GAUSS_REALS - 225, scale_concat({{15, scale_pose()},
+                                                                               {3, scale_blocks({3})},
+                                                                               {3, scale_blocks({3})},
+                                                                               {1, scale_blocks({1})}})},
+                                           {225, scale_cov(15)},
+                                           {1, scale_blocks({1})}});
+    // The mean's vectors are sums v+ = v + d: their rounding is relative to
+    // the operands, |v| and |d| <= |v| + |v+|, not to |v+| alone (a bias
+    // correction can cancel most of the bias). Each of the blocks v, p,
+    // b_g, b_a (reals 9..20, the same place in the input row) is scaled by
+    // the larger of its input and output magnitudes.
+    g["se23_kalman_update"].scale_io = [update_out](const Row &in, const Row &out) {
+        Row s = update_out(out);
+        for (size_t at = 9; at < 21; at += 3) {
+            const LD m = max_abs(in, at, 3);
+            for (size_t i = at; i < at + 3; ++i) s[i] = std::max(s[i], m);
+        }
+        return s;
+    };
 }
 
 } // namespace gen
