@@ -41,12 +41,21 @@
  *    independent with std  tilt = sigma_f / (g sqrt N), and the
  *    vertical component of the noise (along d) leaves the attitude alone.
  *  - Yaw. A heading error dpsi turns the whole attitude about the nav
- *    vertical: R = Rz(dpsi) Rbar, eps = (0, 0, dpsi), std sigma_yaw,
- *    independent of the tilt error (a heading from another source).
+ *    vertical: R = Rz(dpsi) Rbar, eps = (0, 0, dpsi). The model takes it
+ *    with std sigma_yaw, independent of the tilt error.
  *  So P_eps = diag(tilt^2, tilt^2, sigma_yaw^2) (z the vertical in NED
  *  and ENU alike) and, with r = Rbar^T e_z (the third row of Rbar),
  *    P_phi = Rbar^T P_eps Rbar = tilt^2 I + (sigma_yaw^2 - tilt^2) r r^T,
  *  the form computed (symmetric by construction; from R^T R = I).
+ *  Neglected first-order couplings of the vertical error with the tilt,
+ *  both of size tilt x tan(angle), far below any heading source's error
+ *  (tilt ~ 1e-3 rad or less) unless the angle nears 90 deg:
+ *   (i) a yaw held fixed as the Euler angle of se23_align_level: a tilt
+ *       error then also turns R about the vertical by -tan(pitch) eps_a,
+ *       eps_a the tilt about the horizontal direction of body x
+ *       (a = Rz(yaw) e_x), since d(Rz Ry Rx) = (e_z dyaw + Rz e_y dpitch +
+ *       Rz Ry e_x droll)^ R and Rz Ry e_x = cos(pitch) a - sin(pitch) e_z;
+ *   (ii) gyrocompassing: tan(lat) times the tilt about north (below).
  *
  * Gyrocompassing (se23_align_gyrocompass). At rest the gyro reads the Earth
  * rate, w_b = R^T w_ie_n, w_ie_n = W (cos lat, 0, -sin lat) in NED and
