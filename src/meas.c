@@ -1,8 +1,9 @@
 /* Ready-made measurement models; see kalman.h. Each writes the residual
- * z = y - h(Tbar), the rows of H for the right-multiplied error and R, and
- * zeros in every entry beyond the m = 3 rows: every element of the output
- * exactly once (z 9, H 135, R 81 stores), so the output is fully defined
- * whatever the caller's buffer held. */
+ * z = y - h(Tbar, bbar), the rows of H for the right-multiplied error and
+ * R, and zeros in every entry beyond the m = 3 rows: every element of the
+ * output exactly once (z 9, H 135, R 81 stores), so the output is fully
+ * defined whatever the caller's buffer held. A residual or a Jacobian
+ * entry that would overflow is refused before the first store. */
 #include "se23/kalman.h"
 
 #include "argcheck.h"
@@ -10,20 +11,50 @@
 #include "kalman_parts.h"
 #include "se23/se23.h"
 
-enum { S = SE23_GAUSS_NMAX, M = SE23_MEAS_MMAX, BG = SE23_IDX_BG };
+enum {
+    S = SE23_GAUSS_NMAX,
+    M = SE23_MEAS_MMAX,
+    NB = SE23_GAUSS_NMAX / 3 /* 3-column blocks of H: phi, nu, rho, b_g, b_a */
+};
 
-/* Shared checks: T a valid pose, the measured vectors finite, cov valid. */
-static se23_status_t check_inputs(const se23_pose_t *T, const se23_vec3_t *a,
-                                  const se23_vec3_t *b, const se23_mat3_t *cov)
+/* The checks of the caller's inputs: the nv vectors v[k] finite and cov a
+ * valid covariance. */
+static se23_status_t check_vecs(const se23_vec3_t *const *v, int nv,
+                                const se23_mat3_t *cov)
 {
-    se23_status_t st = se23_pose_check(T);
+    for (int k = 0; k < nv; ++k) {
+        if (se23_all_finite(v[k]->v, 3) == 0) {
+            return SE23_ERR_NONFINITE;
+        }
+    }
+    return se23_meas_cov_check(&cov->m[0][0], 3, 3);
+}
+
+/* As check_vecs, T a valid pose first. */
+static se23_status_t check_inputs(const se23_pose_t *T,
+                                  const se23_vec3_t *const *v, int nv,
+                                  const se23_mat3_t *cov)
+{
+    const se23_status_t st = se23_pose_check(T);
     if (st != SE23_OK) {
         return st;
     }
-    if (!se23_all_finite(a->v, 3) || !se23_all_finite(b->v, 3)) {
-        return SE23_ERR_NONFINITE;
+    return check_vecs(v, nv, cov);
+}
+
+/* out = -R u^, the Jacobian of R (x u) in phi for R = Rbar exp(phi^):
+ * row i of -R u^ is u x (row i of R). */
+static void neg_r_skew(const se23_mat3_t *R, const se23_vec3_t *u,
+                       se23_mat3_t *out)
+{
+    for (int i = 0; i < 3; ++i) {
+        const se23_vec3_t ri = {{R->m[i][0], R->m[i][1], R->m[i][2]}};
+        se23_vec3_t a;
+        se23_v3_cross(u, &ri, &a);
+        for (int j = 0; j < 3; ++j) {
+            out->m[i][j] = a.v[j];
+        }
     }
-    return se23_meas_cov_check(&cov->m[0][0], 3, 3);
 }
 
 /* x[0..n-1] = 0 */
@@ -45,33 +76,43 @@ static void put_block(se23_meas_t *y, int col, const se23_mat3_t *A)
     }
 }
 
-/* A 3-row measurement: m, z = meas - pred, R = cov, H = [A, B, C, 0, 0]
- * (blocks phi, nu, rho, b_g, b_a; NULL for a zero block), and zeros in
- * every entry beyond the three rows. Written only once every check has
- * passed; every element once. */
-static void put3(const se23_vec3_t *meas, const se23_vec3_t *pred,
-                 const se23_mat3_t *cov, const se23_mat3_t *A,
-                 const se23_mat3_t *B, const se23_mat3_t *C, se23_meas_t *y)
+/* A 3-row measurement: m, z = meas - pred, R = cov, H = [blk[0], ...,
+ * blk[4]] (blocks phi, nu, rho, b_g, b_a; NULL for a zero block), and zeros
+ * in every entry beyond the three rows. Refuses (SE23_ERR_NONFINITE,
+ * nothing written) a z or a block that overflowed; otherwise writes every
+ * element once. */
+static se23_status_t put3(const se23_vec3_t *meas, const se23_vec3_t *pred,
+                          const se23_mat3_t *cov,
+                          const se23_mat3_t *const *blk, se23_meas_t *y)
 {
+    se23_vec3_t z;
+    se23_v3_axpy(meas, SE23_R(-1), pred, &z);
+    if (se23_all_finite(z.v, 3) == 0) {
+        return SE23_ERR_NONFINITE;
+    }
+    for (int b = 0; b < NB; ++b) {
+        if ((blk[b] != NULL) && (se23_all_finite(&blk[b]->m[0][0], 9) == 0)) {
+            return SE23_ERR_NONFINITE;
+        }
+    }
     y->m = 3;
-    put_block(y, SE23_IDX_PHI, A);
-    put_block(y, SE23_IDX_NU, B);
-    put_block(y, SE23_IDX_RHO, C);
+    for (int b = 0; b < NB; ++b) {
+        put_block(y, 3 * b, blk[b]);
+    }
     for (int i = 0; i < 3; ++i) {
-        y->z[i] = meas->v[i] - pred->v[i];
+        y->z[i] = z.v[i];
         for (int j = 0; j < 3; ++j) {
             y->R[M * i + j] = cov->m[i][j];
         }
     }
-    /* The zeros, as contiguous runs: bias columns of rows 0 and 1, then
-     * row 2's bias columns through the end of H; likewise for R. */
+    /* The zeros, as contiguous runs: rows 3..8 of z and H; the columns
+     * 3..8 of R's rows 0 and 1, then row 2's through the end of R. */
     zero(&y->z[3], M - 3);
-    zero(&y->H[BG], S - BG);
-    zero(&y->H[S + BG], S - BG);
-    zero(&y->H[2 * S + BG], S * M - (2 * S + BG));
+    zero(&y->H[3 * S], S * (M - 3));
     zero(&y->R[3], M - 3);
     zero(&y->R[M + 3], M - 3);
     zero(&y->R[2 * M + 3], M * M - (2 * M + 3));
+    return SE23_OK;
 }
 
 se23_status_t se23_meas_pos_nav(const se23_pose_t *T, const se23_vec3_t *p_n,
@@ -83,24 +124,18 @@ se23_status_t se23_meas_pos_nav(const se23_pose_t *T, const se23_vec3_t *p_n,
     SE23_CHECK_NOT_NULL(lever_b);
     SE23_CHECK_NOT_NULL(cov);
     SE23_CHECK_NOT_NULL(y);
-    const se23_status_t st = check_inputs(T, p_n, lever_b, cov);
+    const se23_vec3_t *const in[2] = {p_n, lever_b};
+    const se23_status_t st = check_inputs(T, in, 2, cov);
     if (st != SE23_OK) {
         return st;
     }
-    /* h = p + R l; H_phi = -R l^, whose row i is l x (row i of R). */
+    /* h = p + R l; H = [-R l^, 0, R, 0, 0]. */
     se23_vec3_t h;
     se23_mat3_t A;
     se23_act(T, lever_b, &h);
-    for (int i = 0; i < 3; ++i) {
-        const se23_vec3_t ri = {{T->R.m[i][0], T->R.m[i][1], T->R.m[i][2]}};
-        se23_vec3_t a;
-        se23_v3_cross(lever_b, &ri, &a);
-        for (int j = 0; j < 3; ++j) {
-            A.m[i][j] = a.v[j];
-        }
-    }
-    put3(p_n, &h, cov, &A, NULL, &T->R, y);
-    return SE23_OK;
+    neg_r_skew(&T->R, lever_b, &A);
+    const se23_mat3_t *const blk[NB] = {&A, NULL, &T->R, NULL, NULL};
+    return put3(p_n, &h, cov, blk, y);
 }
 
 se23_status_t se23_meas_vel_nav(const se23_pose_t *T, const se23_vec3_t *v_n,
@@ -110,12 +145,42 @@ se23_status_t se23_meas_vel_nav(const se23_pose_t *T, const se23_vec3_t *v_n,
     SE23_CHECK_NOT_NULL(v_n);
     SE23_CHECK_NOT_NULL(cov);
     SE23_CHECK_NOT_NULL(y);
-    const se23_status_t st = check_inputs(T, v_n, v_n, cov);
+    const se23_vec3_t *const in[1] = {v_n};
+    const se23_status_t st = check_inputs(T, in, 1, cov);
     if (st != SE23_OK) {
         return st;
     }
-    put3(v_n, &T->v, cov, NULL, &T->R, NULL, y);
-    return SE23_OK;
+    const se23_mat3_t *const blk[NB] = {NULL, &T->R, NULL, NULL, NULL};
+    return put3(v_n, &T->v, cov, blk, y);
+}
+
+se23_status_t se23_meas_vel_nav_lever(const se23_pose_t *T,
+                                      const se23_vec3_t *w_b,
+                                      const se23_vec3_t *lever_b,
+                                      const se23_vec3_t *v_n,
+                                      const se23_mat3_t *cov, se23_meas_t *y)
+{
+    SE23_CHECK_NOT_NULL(T);
+    SE23_CHECK_NOT_NULL(w_b);
+    SE23_CHECK_NOT_NULL(lever_b);
+    SE23_CHECK_NOT_NULL(v_n);
+    SE23_CHECK_NOT_NULL(cov);
+    SE23_CHECK_NOT_NULL(y);
+    const se23_vec3_t *const in[3] = {w_b, lever_b, v_n};
+    const se23_status_t st = check_inputs(T, in, 3, cov);
+    if (st != SE23_OK) {
+        return st;
+    }
+    /* h = v + R u, u = w x l (kalman.h); H = [-R u^, R, 0, -R l^, 0]. */
+    se23_vec3_t u, h;
+    se23_mat3_t A, D;
+    se23_v3_cross(w_b, lever_b, &u);
+    se23_m3_mul_v3(&T->R, &u, &h);
+    se23_v3_axpy(&T->v, SE23_R(1), &h, &h);
+    neg_r_skew(&T->R, &u, &A);
+    neg_r_skew(&T->R, lever_b, &D);
+    const se23_mat3_t *const blk[NB] = {&A, &T->R, NULL, &D, NULL};
+    return put3(v_n, &h, cov, blk, y);
 }
 
 se23_status_t se23_meas_vel_body(const se23_pose_t *T, const se23_vec3_t *v_b,
@@ -125,16 +190,40 @@ se23_status_t se23_meas_vel_body(const se23_pose_t *T, const se23_vec3_t *v_b,
     SE23_CHECK_NOT_NULL(v_b);
     SE23_CHECK_NOT_NULL(cov);
     SE23_CHECK_NOT_NULL(y);
-    const se23_status_t st = check_inputs(T, v_b, v_b, cov);
+    const se23_vec3_t *const in[1] = {v_b};
+    const se23_status_t st = check_inputs(T, in, 1, cov);
     if (st != SE23_OK) {
         return st;
     }
-    /* h = R^T v; H = [h^, I, 0]. */
+    /* h = R^T v; H = [h^, I, 0, 0, 0]. */
     se23_vec3_t h;
     se23_mat3_t A, I;
     se23_m3_tmul_v3(&T->R, &T->v, &h);
     se23_m3_skew(&h, &A);
     se23_m3_identity(&I);
-    put3(v_b, &h, cov, &A, &I, NULL, y);
-    return SE23_OK;
+    const se23_mat3_t *const blk[NB] = {&A, &I, NULL, NULL, NULL};
+    return put3(v_b, &h, cov, blk, y);
+}
+
+se23_status_t se23_meas_zero_rate(const se23_vec3_t *w_meas,
+                                  const se23_vec3_t *b_g,
+                                  const se23_mat3_t *cov, se23_meas_t *y)
+{
+    SE23_CHECK_NOT_NULL(w_meas);
+    SE23_CHECK_NOT_NULL(b_g);
+    SE23_CHECK_NOT_NULL(cov);
+    SE23_CHECK_NOT_NULL(y);
+    const se23_vec3_t *const in[2] = {w_meas, b_g};
+    const se23_status_t st = check_vecs(in, 2, cov);
+    if (st != SE23_OK) {
+        return st;
+    }
+    /* y = 0, h = w_meas + b_g; H = [0, 0, 0, I, 0]. */
+    const se23_vec3_t rest = {{SE23_R(0), SE23_R(0), SE23_R(0)}};
+    se23_vec3_t h;
+    se23_mat3_t I;
+    se23_v3_axpy(w_meas, SE23_R(1), b_g, &h);
+    se23_m3_identity(&I);
+    const se23_mat3_t *const blk[NB] = {NULL, NULL, NULL, &I, NULL};
+    return put3(&rest, &h, cov, blk, y);
 }

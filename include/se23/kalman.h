@@ -3,7 +3,8 @@
  * @brief Kalman update of a concentrated Gaussian in exponential coordinates
  *        (DESIGN.md section 3, "Measurement update") and ready-made
  *        measurement models: position and velocity in the navigation frame
- *        (GNSS), velocity in the body frame (zero velocity, odometer).
+ *        (GNSS, with lever arm), velocity in the body frame (odometer),
+ *        zero velocity (ZUPT) and zero angular rate (ZARU).
  *
  * A measurement y = h(T, b) + noise, noise ~ N(0, R), is linearised at the
  * estimate in the error of gauss.h, T = Tbar exp(xi), b = bbar + db:
@@ -18,7 +19,7 @@
  * elimination step) it is positive semidefinite to rounding whatever R,
  * and exactly symmetric (upper triangle computed, mirrored). Only the
  * 3-column blocks of H (phi, nu, rho, b_g, b_a) that hold a nonzero take
- * part: the models below touch two blocks, so a GNSS update costs about
+ * part: the models below touch one to three blocks, so a GNSS update costs about
  * 800 multiply-adds instead of the 9,500 of the dense Joseph form
  * (src/kalman_parts.c gives the count). P+ is the covariance of the error
  * at the old estimate; the O(|dx|) change of coordinates of the
@@ -43,10 +44,18 @@
  * with stride 9, (i, j) at R[9*i + j].
  *
  * Functions index:
- *   se23_kalman_update    the update above
- *   se23_meas_pos_nav     GNSS position (with lever arm)
- *   se23_meas_vel_nav     GNSS velocity
- *   se23_meas_vel_body    velocity in the body frame (zero velocity / odometer)
+ *   se23_kalman_update       the update above
+ *   se23_meas_pos_nav        GNSS position (with lever arm)
+ *   se23_meas_vel_nav        GNSS velocity; zero velocity (ZUPT) with v_n = 0
+ *   se23_meas_vel_nav_lever  GNSS velocity of an antenna at a lever arm
+ *   se23_meas_vel_body       velocity in the body frame (odometer; ZUPT too)
+ *   se23_meas_zero_rate      zero angular rate (ZARU), gyro bias only
+ *
+ * Zero velocity (ZUPT) needs no model of its own: at rest v = 0, so
+ * se23_meas_vel_nav with v_n the zero vector (H = [0, R, 0, 0, 0]) is the
+ * update; se23_meas_vel_body with v_b = 0 is the same constraint in body
+ * axes (equivalent for an isotropic cov). Pair it with se23_meas_zero_rate
+ * to also observe the gyro bias while standing still.
  *
  * All functions accept outputs that alias inputs. The models write every
  * element of their output (rows beyond m and the bias columns 0).
@@ -104,8 +113,10 @@ se23_status_t se23_kalman_update(const se23_gauss_t *g, const se23_meas_t *y,
  * @param p_n    measured position, nav frame [m]
  * @param lever_b antenna position in the body frame [m] (zero vector if none)
  * @param cov    measurement noise covariance [m^2]
- * @return SE23_ERR_NONFINITE, SE23_ERR_NOT_ROTATION (T), or the covariance
- *         statuses of gauss.h for cov.
+ * @return SE23_ERR_NONFINITE (an input holds NaN or Inf, or the residual
+ *         or an entry of H would overflow), SE23_ERR_NOT_ROTATION (T), or
+ *         the covariance statuses of gauss.h for cov. On error y is not
+ *         written.
  */
 se23_status_t se23_meas_pos_nav(const se23_pose_t *T, const se23_vec3_t *p_n,
                                 const se23_vec3_t *lever_b,
@@ -121,6 +132,43 @@ se23_status_t se23_meas_vel_nav(const se23_pose_t *T, const se23_vec3_t *v_n,
                                 const se23_mat3_t *cov, se23_meas_t *y);
 
 /**
+ * y = the velocity of a GNSS antenna at lever arm l_b (body frame) measured
+ * in the nav frame. The antenna moves with v + R (w x l_b), w the true body
+ * angular rate in body axes. The gyro measures the rate relative to inertial
+ * space; the Earth-rate part of it, |w_ie| |l_b| = 7.3e-5 m/s per metre of
+ * lever, is neglected (it is the nav-frame rate that moves the antenna
+ * relative to the Earth). With the gyro bias convention of gauss.h
+ * (w = w_meas + b_g), the caller passes the bias-corrected rate
+ * w_b = w_meas + bbar_g and
+ *   h(T, b) = v + R (w x l_b),  w = w_b + db_g.
+ * Linearised at Tbar, bbar with R = Rbar exp(phi^), v = vbar + Rbar nu + O(|xi|^2),
+ * u = w_b x l_b, and a^ b = a x b:
+ *   phi:  Rbar phi^ u = -Rbar u^ phi                        -> -R u^
+ *   nu:   Rbar nu                                           ->  R
+ *   b_g:  Rbar (db_g x l_b) = -Rbar l_b^ db_g               -> -R l_b^
+ * so H = [-R (w_b x l_b)^, R, 0, -R l_b^, 0] (columns phi, nu, rho, b_g,
+ * b_a) and z = v_n - vbar - Rbar (w_b x l_b). The b_g columns (9..11) are
+ * used by a 15-state filter; se23_kalman_update with a 9-state g reads only
+ * the first 9 columns of H (file comment) and ignores the rest, so there
+ * the gyro bias is taken as known (its error not modelled). With l_b = 0
+ * this is se23_meas_vel_nav.
+ * @param T       estimate Tbar
+ * @param w_b     bias-corrected body angular rate w_meas + bbar_g [rad/s],
+ *                e.g. of the IMU sample at the time of the fix
+ * @param lever_b antenna position in the body frame [m]
+ * @param v_n     measured antenna velocity, nav frame [m/s]
+ * @param cov     measurement noise covariance [m^2/s^2] (include the gyro
+ *                noise mapped through the lever, |l_b|^2 sigma_w^2, if it
+ *                matters)
+ * @return as se23_meas_pos_nav.
+ */
+se23_status_t se23_meas_vel_nav_lever(const se23_pose_t *T,
+                                      const se23_vec3_t *w_b,
+                                      const se23_vec3_t *lever_b,
+                                      const se23_vec3_t *v_n,
+                                      const se23_mat3_t *cov, se23_meas_t *y);
+
+/**
  * y = the velocity measured in the body frame (zero-velocity update with
  * v_b = 0, or an odometer): h(T) = R^T v, H = [(R^T v)^, I, 0, 0].
  * @param v_b measured velocity, body frame [m/s]
@@ -129,6 +177,35 @@ se23_status_t se23_meas_vel_nav(const se23_pose_t *T, const se23_vec3_t *v_n,
  */
 se23_status_t se23_meas_vel_body(const se23_pose_t *T, const se23_vec3_t *v_b,
                                  const se23_mat3_t *cov, se23_meas_t *y);
+
+/**
+ * y = zero angular rate (ZARU): the vehicle is known to be at rest, so the
+ * true body rate w = w_meas + b_g (gauss.h's bias convention) is taken as
+ * 0: the pseudo-measurement y = 0 of
+ *   h(b) = w_meas + b_g,  H = [0, 0, 0, I, 0] (columns phi, nu, rho, b_g,
+ *   b_a),  z = -(w_meas + bbar_g),
+ * which pulls bbar_g toward -w_meas.
+ * The Earth rate is neglected: at rest the true rate is R^T w_ie, up to
+ * 7.29e-5 rad/s (15 deg/h), and this model leaves it in the bias estimate.
+ * That is below the bias uncertainty of MEMS gyros, which the model is
+ * for; cov should cover it (a standard deviation of about 7.3e-5 rad/s per
+ * axis at least, plus the gyro noise over the averaging window). A
+ * navigation-grade gyro needs the expected rate R^T w_ie, which depends
+ * on the attitude (an H_phi block (R^T w_ie)^, the gyrocompassing signal):
+ * a constant expected rate would be inconsistent there, so none is taken.
+ * Only meaningful for a 15-state filter (n = 15): the first 9 columns of H
+ * are zero, so with n = 9 se23_kalman_update leaves the state unchanged.
+ * @param w_meas the raw gyro measurement [rad/s] (or its mean over the
+ *               rest interval; then scale cov accordingly)
+ * @param b_g    the gyro bias estimate bbar_g [rad/s] (g->b_g)
+ * @param cov    noise covariance of the rate [rad^2/s^2]
+ * @return SE23_ERR_NONFINITE (an input holds NaN or Inf, or w_meas + b_g
+ *         would overflow), or the covariance statuses of gauss.h for cov.
+ *         On error y is not written.
+ */
+se23_status_t se23_meas_zero_rate(const se23_vec3_t *w_meas,
+                                  const se23_vec3_t *b_g,
+                                  const se23_mat3_t *cov, se23_meas_t *y);
 
 #ifdef __cplusplus
 }

@@ -204,7 +204,7 @@ void tv_store_se23_gauss_to_carried(se23_real_t *out) { give_gauss(out, &c.out);
 static struct {
     se23_meas_t y;
     se23_pose_t T;
-    se23_vec3_t x, lever;
+    se23_vec3_t x, lever, w;
     se23_mat3_t cov;
     se23_real_t nis;
 } k;
@@ -265,6 +265,33 @@ void tv_store_se23_meas_vel_nav(se23_real_t *out) { give_meas(out, &k.y); }
 void tv_load_se23_meas_vel_body(const se23_real_t *in) { load_meas_model(in, 0); }
 int tv_call_se23_meas_vel_body(void) { return (int)se23_meas_vel_body(&k.T, &k.x, &k.cov, &k.y); }
 void tv_store_se23_meas_vel_body(se23_real_t *out) { give_meas(out, &k.y); }
+
+/* T, w_b, lever_b, v_n, cov (the argument order). */
+void tv_load_se23_meas_vel_nav_lever(const se23_real_t *in)
+{
+    take(&in, &k.T, sizeof k.T);
+    take(&in, &k.w, sizeof k.w);
+    take(&in, &k.lever, sizeof k.lever);
+    take(&in, &k.x, sizeof k.x);
+    take(&in, &k.cov, sizeof k.cov);
+    fill_meas(&k.y);
+}
+int tv_call_se23_meas_vel_nav_lever(void)
+{
+    return (int)se23_meas_vel_nav_lever(&k.T, &k.w, &k.lever, &k.x, &k.cov, &k.y);
+}
+void tv_store_se23_meas_vel_nav_lever(se23_real_t *out) { give_meas(out, &k.y); }
+
+/* w_meas, b_g, cov. */
+void tv_load_se23_meas_zero_rate(const se23_real_t *in)
+{
+    take(&in, &k.w, sizeof k.w);
+    take(&in, &k.x, sizeof k.x);
+    take(&in, &k.cov, sizeof k.cov);
+    fill_meas(&k.y);
+}
+int tv_call_se23_meas_zero_rate(void) { return (int)se23_meas_zero_rate(&k.w, &k.x, &k.cov, &k.y); }
+void tv_store_se23_meas_zero_rate(se23_real_t *out) { give_meas(out, &k.y); }
 
 void tv_load_se23_kalman_update(const se23_real_t *in)
 {

@@ -116,6 +116,8 @@ TV_CUSTOM(se23_gauss_to_carried, TV_REALS(se23_earth_model_t) + TV_GAUSS_REALS,
 TV_CUSTOM(se23_meas_pos_nav, TV_REALS(se23_pose_t) + 6 + 9, TV_MEAS_REALS, 16)
 TV_CUSTOM(se23_meas_vel_nav, TV_REALS(se23_pose_t) + 3 + 9, TV_MEAS_REALS, 16)
 TV_CUSTOM(se23_meas_vel_body, TV_REALS(se23_pose_t) + 3 + 9, TV_MEAS_REALS, 16)
+TV_CUSTOM(se23_meas_vel_nav_lever, TV_REALS(se23_pose_t) + 9 + 9, TV_MEAS_REALS, 16)
+TV_CUSTOM(se23_meas_zero_rate, 6 + 9, TV_MEAS_REALS, 16)
 TV_CUSTOM(se23_kalman_update, TV_GAUSS_REALS + TV_MEAS_REALS, TV_GAUSS_REALS + 1, 32)
 
 /* preint_unc.h (se23_preint_unc_t travels as TV_PREINT_UNC_REALS reals) */

@@ -1,7 +1,10 @@
 /* Unit tests of src/meas.c: the ready-made measurement models (GNSS
- * position with lever arm, velocity in the nav frame, velocity in the body
- * frame): residuals, H against central differences of h(Tbar exp(xi)) in
- * the double reference, zero bias columns, noise copied, bad input. */
+ * position with lever arm, velocity in the nav frame, velocity of an
+ * antenna at a lever arm, velocity in the body frame, zero angular rate):
+ * residuals, all 15 columns of H against central differences of
+ * h(Tbar exp(xi), bbar + db) in the double reference, noise copied, every
+ * element of the output defined, bad input (nothing written), and Kalman
+ * updates with the rate and lever models. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -13,26 +16,82 @@
 #include "gauss_test.h"
 #include "se23/kalman.h"
 #include "se23/se23.h"
+#include "se23/so3.h"
 #include "se23_test.h"
 
 enum { S = SE23_GAUSS_NMAX, M = SE23_MEAS_MMAX };
 
 #define SENTINEL 0x5a
 #define TOL (64.0 * SE23T_EPS)
+/* Step of the central differences. They are taken in the double reference
+ * in both builds (from the build's float- or double-valued inputs, exactly
+ * converted), so the step is the double one: truncation ~ FD_H^2 |h'''| ~
+ * 1e-12 |h|, rounding ~ eps_double |h| / FD_H ~ 1e-8 for |h| ~ 50. */
 #define FD_H 1e-6
 
-typedef enum { POS_NAV, VEL_NAV, VEL_BODY } model_t;
+typedef enum { POS_NAV, VEL_NAV, VEL_NAV_LEVER, VEL_BODY, ZERO_RATE, N_MODELS } model_t;
 
-/* h(T) in double from the 5x5 form. */
-static void reference_h(model_t which, const gt_m5_t *T, const double l[3],
-                        double h[3])
+/* The inputs of any model; each takes the fields it needs. */
+typedef struct {
+    se23_pose_t T;
+    se23_vec3_t y;   /* measured: p_n, v_n or v_b (unused by ZERO_RATE) */
+    se23_vec3_t l;   /* lever arm (POS_NAV, VEL_NAV_LEVER) */
+    se23_vec3_t w;   /* w_b (VEL_NAV_LEVER), w_meas (ZERO_RATE) */
+    se23_vec3_t b_g; /* gyro bias estimate (ZERO_RATE) */
+    se23_mat3_t cov;
+} case_t;
+
+static int has_pose(model_t which) { return which != ZERO_RATE; }
+
+static se23_status_t call_model(model_t which, const case_t *c, se23_meas_t *out)
 {
+    switch (which) {
+    case POS_NAV:
+        return se23_meas_pos_nav(&c->T, &c->y, &c->l, &c->cov, out);
+    case VEL_NAV:
+        return se23_meas_vel_nav(&c->T, &c->y, &c->cov, out);
+    case VEL_NAV_LEVER:
+        return se23_meas_vel_nav_lever(&c->T, &c->w, &c->l, &c->y, &c->cov, out);
+    case VEL_BODY:
+        return se23_meas_vel_body(&c->T, &c->y, &c->cov, out);
+    default:
+        return se23_meas_zero_rate(&c->w, &c->b_g, &c->cov, out);
+    }
+}
+
+static void random_case(se23t_rng_t *rng, model_t which, case_t *c)
+{
+    memset(c, 0, sizeof *c);
+    se23t_random_pose(rng, 20.0, &c->T);
+    se23t_random_vec3(rng, 20.0, &c->y);
+    se23t_random_vec3(rng, 2.0, &c->l);
+    se23t_random_vec3(rng, (which == ZERO_RATE) ? 0.05 : 2.0, &c->w);
+    se23t_random_vec3(rng, 0.05, &c->b_g);
+    gt_random_cov(rng, 3, 3, 3, 1.0, 0.1, &c->cov.m[0][0]);
+}
+
+/* h(T, bbar + db_g) in double from the 5x5 form of T; db_g = 0 at the
+ * estimate. The bias-corrected rate of the lever model is w_b + db_g, the
+ * true rate of the zero-rate model w_meas + b_g + db_g. */
+static void reference_h(model_t which, const gt_m5_t *T, const case_t *c,
+                        const double db_g[3], double h[3])
+{
+    const double l[3] = {c->l.v[0], c->l.v[1], c->l.v[2]};
+    double w[3];
+    for (int i = 0; i < 3; ++i) {
+        w[i] = (double)c->w.v[i] + db_g[i];
+    }
+    const double u[3] = {w[1] * l[2] - w[2] * l[1], w[2] * l[0] - w[0] * l[2],
+                         w[0] * l[1] - w[1] * l[0]};
     for (int i = 0; i < 3; ++i) {
         double s = 0;
         for (int k = 0; k < 3; ++k) {
             switch (which) {
             case POS_NAV:
                 s += T->m[i][k] * l[k];
+                break;
+            case VEL_NAV_LEVER:
+                s += T->m[i][k] * u[k];
                 break;
             case VEL_BODY:
                 s += T->m[k][i] * T->m[k][3];
@@ -41,27 +100,67 @@ static void reference_h(model_t which, const gt_m5_t *T, const double l[3],
                 break;
             }
         }
-        if (which == POS_NAV) {
+        switch (which) {
+        case POS_NAV:
             s += T->m[i][4];
-        } else if (which == VEL_NAV) {
-            s = T->m[i][3];
+            break;
+        case VEL_NAV:
+        case VEL_NAV_LEVER:
+            s += T->m[i][3];
+            break;
+        case ZERO_RATE:
+            s = w[i] + (double)c->b_g.v[i];
+            break;
+        default:
+            break;
         }
         h[i] = s;
     }
 }
 
-static se23_status_t call_model(model_t which, const se23_pose_t *T,
-                                const se23_vec3_t *y, const se23_vec3_t *l,
-                                const se23_mat3_t *cov, se23_meas_t *out)
+/* The measured vector of the model (0 for the zero-rate model). */
+static double measured(model_t which, const case_t *c, int i)
 {
-    switch (which) {
-    case POS_NAV:
-        return se23_meas_pos_nav(T, y, l, cov, out);
-    case VEL_NAV:
-        return se23_meas_vel_nav(T, y, cov, out);
-    default:
-        return se23_meas_vel_body(T, y, cov, out);
+    return (which == ZERO_RATE) ? 0.0 : (double)c->y.v[i];
+}
+
+/* Central differences of h in all 15 error coordinates (xi by
+ * T exp(xi), db_g through the rate, db_a: no model depends on it). */
+static void central_differences(model_t which, const case_t *c, double cd[3][S])
+{
+    gt_m5_t Td;
+    gt_from_pose(&c->T, &Td);
+    for (int j = 0; j < S; ++j) {
+        double hs[2][3];
+        for (int sgn = 0; sgn < 2; ++sgn) {
+            const double d = sgn ? FD_H : -FD_H;
+            double e[9] = {0}, db[3] = {0};
+            if (j < 9) {
+                e[j] = d;
+            } else if (j < 12) {
+                db[j - 9] = d;
+            }
+            gt_m5_t E, Tp;
+            gt_exp(e, &E);
+            gt_m5_mul(&Td, &E, &Tp);
+            reference_h(which, &Tp, c, db, hs[sgn]);
+        }
+        for (int i = 0; i < 3; ++i) {
+            cd[i][j] = (hs[1][i] - hs[0][i]) / (2 * FD_H);
+        }
     }
+}
+
+/* The largest |cd| in the 3x3 block of column j. */
+static double block_scale(double cd[3][S], int j)
+{
+    double s = 0;
+    for (int i = 0; i < 3; ++i) {
+        for (int k = 3 * (j / 3); k < 3 * (j / 3) + 3; ++k) {
+            s = fmax(s, fabs(cd[i][k]));
+        }
+    }
+    return s;
 }
 
 static void test_meas_models_match_central_differences(void **state)
@@ -69,49 +168,86 @@ static void test_meas_models_match_central_differences(void **state)
     (void)state;
     se23t_rng_t rng;
     se23t_rng_seed(&rng, 701);
-    for (int which = POS_NAV; which <= VEL_BODY; ++which) {
+    for (int which = POS_NAV; which < N_MODELS; ++which) {
+        const model_t w = (model_t)which;
         for (int rep = 0; rep < 30; ++rep) {
-            se23_pose_t T;
-            se23_vec3_t y, l;
-            se23_mat3_t cov;
+            case_t c;
             se23_meas_t out;
-            se23t_random_pose(&rng, 20.0, &T);
-            se23t_random_vec3(&rng, 20.0, &y);
-            se23t_random_vec3(&rng, (which == POS_NAV) ? 2.0 : 0.0, &l);
-            gt_random_cov(&rng, 3, 3, 3, 1.0, 0.1, &cov.m[0][0]);
+            random_case(&rng, w, &c);
             memset(&out, SENTINEL, sizeof out);
-            assert_int_equal(call_model((model_t)which, &T, &y, &l, &cov, &out), SE23_OK);
+            assert_int_equal(call_model(w, &c, &out), SE23_OK);
             assert_int_equal(out.m, 3);
             gt_m5_t Td;
-            gt_from_pose(&T, &Td);
-            const double ld[3] = {l.v[0], l.v[1], l.v[2]};
-            double h0[3];
-            reference_h((model_t)which, &Td, ld, h0);
+            gt_from_pose(&c.T, &Td);
+            const double none[3] = {0};
+            double h0[3], cd[3][S];
+            reference_h(w, &Td, &c, none, h0);
+            central_differences(w, &c, cd);
             for (int i = 0; i < 3; ++i) {
-                assert_near(out.z[i], (double)y.v[i] - h0[i], 2 * TOL * 40, 0.0);
+                assert_near(out.z[i], measured(w, &c, i) - h0[i], 2 * TOL * 40, 0.0);
                 for (int j = 0; j < 3; ++j) {
-                    assert_true(out.R[M * i + j] == cov.m[i][j]);
+                    assert_true(out.R[M * i + j] == c.cov.m[i][j]);
                 }
-                for (int j = 9; j < S; ++j) {
+                /* No model depends on the accelerometer bias. */
+                for (int j = SE23_IDX_BA; j < S; ++j) {
                     assert_true(out.H[S * i + j] == SE23_R(0));
                 }
-            }
-            for (int j = 0; j < 9; ++j) {
-                double hp[3], hm[3];
-                for (int sgn = -1; sgn <= 1; sgn += 2) {
-                    double e[9] = {0};
-                    e[j] = sgn * FD_H;
-                    gt_m5_t E, Tp;
-                    gt_exp(e, &E);
-                    gt_m5_mul(&Td, &E, &Tp);
-                    reference_h((model_t)which, &Tp, ld, sgn > 0 ? hp : hm);
+                /* Only the lever and rate models on the gyro bias. */
+                for (int j = SE23_IDX_BG; j < SE23_IDX_BA && w != VEL_NAV_LEVER && w != ZERO_RATE; ++j) {
+                    assert_true(out.H[S * i + j] == SE23_R(0));
                 }
-                for (int i = 0; i < 3; ++i) {
-                    const double cd = (hp[i] - hm[i]) / (2 * FD_H);
-                    /* CD: rounding ~ 40 eps / 1e-6 = 1e-8 (double). */
-                    assert_near(out.H[S * i + j], cd, 1e-7 + TOL * 40, 0.0);
+                /* Per block: the CD's error (1e-7 absolute and relative)
+                 * plus the library's rounding (32 eps of the block's
+                 * magnitude). Far below the entries (O(1) to O(40)), so a
+                 * wrong sign or block fails. */
+                for (int j = 0; j < S; ++j) {
+                    const double s = block_scale(cd, j);
+                    assert_near(out.H[S * i + j], cd[i][j], 1e-7 * (1.0 + s) + 32.0 * SE23T_EPS * s, 0.0);
                 }
             }
+        }
+    }
+}
+
+/* The blocks of the two new models, the formulas of kalman.h: lever
+ * velocity H = [-R (w x l)^, R, 0, -R l^, 0], zero rate [0, 0, 0, I, 0]
+ * (exact). */
+static void test_meas_new_models_blocks(void **state)
+{
+    (void)state;
+    se23t_rng_t rng;
+    se23t_rng_seed(&rng, 704);
+    case_t c;
+    se23_meas_t out;
+    random_case(&rng, VEL_NAV_LEVER, &c);
+    assert_int_equal(call_model(VEL_NAV_LEVER, &c, &out), SE23_OK);
+    se23_vec3_t u;
+    se23_mat3_t ux, lx;
+    u.v[0] = c.w.v[1] * c.l.v[2] - c.w.v[2] * c.l.v[1];
+    u.v[1] = c.w.v[2] * c.l.v[0] - c.w.v[0] * c.l.v[2];
+    u.v[2] = c.w.v[0] * c.l.v[1] - c.w.v[1] * c.l.v[0];
+    se23_so3_hat(&u, &ux);
+    se23_so3_hat(&c.l, &lx);
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            double a = 0, d = 0;
+            for (int k = 0; k < 3; ++k) {
+                a -= (double)c.T.R.m[i][k] * (double)ux.m[k][j];
+                d -= (double)c.T.R.m[i][k] * (double)lx.m[k][j];
+            }
+            assert_near(out.H[S * i + j], a, 16 * TOL, 0.0);
+            assert_true(out.H[S * i + SE23_IDX_NU + j] == c.T.R.m[i][j]);
+            assert_true(out.H[S * i + SE23_IDX_RHO + j] == SE23_R(0));
+            assert_near(out.H[S * i + SE23_IDX_BG + j], d, 16 * TOL, 0.0);
+        }
+    }
+    random_case(&rng, ZERO_RATE, &c);
+    assert_int_equal(call_model(ZERO_RATE, &c, &out), SE23_OK);
+    for (int i = 0; i < 3; ++i) {
+        assert_true(out.z[i] == -(c.w.v[i] + c.b_g.v[i]));
+        for (int j = 0; j < S; ++j) {
+            const se23_real_t e = (j == SE23_IDX_BG + i) ? SE23_R(1) : SE23_R(0);
+            assert_true(out.H[S * i + j] == e);
         }
     }
 }
@@ -130,69 +266,167 @@ static void test_meas_vel_body_is_zero_velocity_update(void **state)
     assert_true(y.z[0] == SE23_R(-0.5) && y.z[1] == SE23_R(0) && y.z[2] == SE23_R(0));
 }
 
+/* ZUPT (kalman.h) is se23_meas_vel_nav with the zero vector: z = -v; and
+ * the lever model with l = 0 is se23_meas_vel_nav, value for value. */
+static void test_meas_zupt_and_zero_lever_are_vel_nav(void **state)
+{
+    (void)state;
+    se23t_rng_t rng;
+    se23t_rng_seed(&rng, 705);
+    case_t c;
+    random_case(&rng, VEL_NAV_LEVER, &c);
+    const se23_vec3_t zero = {{0}};
+    se23_meas_t a, b;
+    assert_int_equal(se23_meas_vel_nav(&c.T, &zero, &c.cov, &a), SE23_OK);
+    for (int i = 0; i < 3; ++i) {
+        assert_true(a.z[i] == -c.T.v.v[i]);
+    }
+    memset(&b, SENTINEL, sizeof b);
+    assert_int_equal(se23_meas_vel_nav_lever(&c.T, &c.w, &zero, &zero, &c.cov, &b), SE23_OK);
+    assert_int_equal(b.m, a.m);
+    for (int i = 0; i < M; ++i) {
+        assert_true(b.z[i] == a.z[i]);
+        for (int j = 0; j < S; ++j) {
+            assert_true(b.H[S * i + j] == a.H[S * i + j]);
+        }
+        for (int j = 0; j < M; ++j) {
+            assert_true(b.R[M * i + j] == a.R[M * i + j]);
+        }
+    }
+}
+
+/* A vector input of the model by position (0, 1, 2), NULL past its last. */
+static se23_vec3_t *vec_input(model_t which, case_t *c, int k)
+{
+    se23_vec3_t *const pos_nav[] = {&c->y, &c->l, NULL};
+    se23_vec3_t *const one[] = {&c->y, NULL, NULL};
+    se23_vec3_t *const lever[] = {&c->w, &c->l, &c->y};
+    se23_vec3_t *const rate[] = {&c->w, &c->b_g, NULL};
+    switch (which) {
+    case POS_NAV:
+        return pos_nav[k];
+    case VEL_NAV_LEVER:
+        return lever[k];
+    case ZERO_RATE:
+        return rate[k];
+    default:
+        return one[k];
+    }
+}
+
 static void test_meas_models_reject_bad_input_untouched(void **state)
 {
     (void)state;
     se23t_rng_t rng;
     se23t_rng_seed(&rng, 702);
-    se23_pose_t T, badT;
-    se23_vec3_t y, l = {{SE23_R(0.1), 0, 0}}, bad;
-    se23_mat3_t cov, badc;
     se23_meas_t out, out0;
-    se23t_random_pose(&rng, 5.0, &T);
-    se23t_random_vec3(&rng, 5.0, &y);
-    gt_random_cov(&rng, 3, 3, 3, 1.0, 0.1, &cov.m[0][0]);
     memset(&out, SENTINEL, sizeof out);
     out0 = out;
-    for (int which = POS_NAV; which <= VEL_BODY; ++which) {
+    for (int which = POS_NAV; which < N_MODELS; ++which) {
         const model_t w = (model_t)which;
-        bad = y;
-        bad.v[1] = (se23_real_t)NAN;
-        assert_int_equal(call_model(w, &T, &bad, &l, &cov, &out), SE23_ERR_NONFINITE);
-        badT = T;
-        badT.R.m[0][1] += SE23_R(0.01);
-        assert_int_equal(call_model(w, &badT, &y, &l, &cov, &out), SE23_ERR_NOT_ROTATION);
-        badT = T;
-        badT.v.v[2] = (se23_real_t)INFINITY;
-        assert_int_equal(call_model(w, &badT, &y, &l, &cov, &out), SE23_ERR_NONFINITE);
-        badc = cov;
-        badc.m[0][2] += SE23_R(0.5);
-        assert_int_equal(call_model(w, &T, &y, &l, &badc, &out), SE23_ERR_NOT_SYMMETRIC);
-        badc = cov;
-        badc.m[1][1] = -badc.m[1][1];
-        assert_int_equal(call_model(w, &T, &y, &l, &badc, &out), SE23_ERR_NOT_PSD);
-        badc.m[1][1] = (se23_real_t)NAN;
-        assert_int_equal(call_model(w, &T, &y, &l, &badc, &out), SE23_ERR_NONFINITE);
+        case_t c, bad;
+        random_case(&rng, w, &c);
+        for (int k = 0; k < 3 && vec_input(w, &c, k) != NULL; ++k) {
+            for (int i = 0; i < 3; ++i) {
+                bad = c;
+                vec_input(w, &bad, k)->v[i] = (se23_real_t)((i == 1) ? -INFINITY : NAN);
+                assert_int_equal(call_model(w, &bad, &out), SE23_ERR_NONFINITE);
+            }
+        }
+        if (has_pose(w)) {
+            bad = c;
+            bad.T.R.m[0][1] += SE23_R(0.01);
+            assert_int_equal(call_model(w, &bad, &out), SE23_ERR_NOT_ROTATION);
+            bad = c;
+            bad.T.v.v[2] = (se23_real_t)INFINITY;
+            assert_int_equal(call_model(w, &bad, &out), SE23_ERR_NONFINITE);
+            bad = c;
+            bad.T.p.v[0] = (se23_real_t)NAN;
+            assert_int_equal(call_model(w, &bad, &out), SE23_ERR_NONFINITE);
+        }
+        bad = c;
+        bad.cov.m[0][2] += SE23_R(0.5);
+        assert_int_equal(call_model(w, &bad, &out), SE23_ERR_NOT_SYMMETRIC);
+        bad = c;
+        bad.cov.m[1][1] = -bad.cov.m[1][1];
+        assert_int_equal(call_model(w, &bad, &out), SE23_ERR_NOT_PSD);
+        bad.cov.m[1][1] = (se23_real_t)NAN;
+        assert_int_equal(call_model(w, &bad, &out), SE23_ERR_NONFINITE);
     }
-    bad = l;
-    bad.v[0] = (se23_real_t)NAN;
-    assert_int_equal(se23_meas_pos_nav(&T, &y, &bad, &cov, &out), SE23_ERR_NONFINITE);
     assert_memory_equal(&out, &out0, sizeof out);
 }
 
-/* Every element of the output is written: rows beyond m = 3 and the bias
- * columns are zero whatever the buffer held. */
+/* Finite inputs whose residual or Jacobian would overflow are refused
+ * (types.h: SE23_OK means finite outputs), nothing written. */
+static void test_meas_models_refuse_overflow_untouched(void **state)
+{
+    (void)state;
+#if SE23_CFG_DOUBLE
+    const se23_real_t big = SE23_R(1e200), huge = SE23_R(0.75 * DBL_MAX);
+#else
+    const se23_real_t big = SE23_R(1e30), huge = SE23_R(0.75 * FLT_MAX);
+#endif
+    se23t_rng_t rng;
+    se23t_rng_seed(&rng, 706);
+    se23_meas_t out, out0;
+    memset(&out, SENTINEL, sizeof out);
+    out0 = out;
+    case_t c;
+    random_case(&rng, VEL_NAV_LEVER, &c);
+    /* |w x l| ~ big^2: h, z and -R (w x l)^ overflow. */
+    c.w.v[0] = big;
+    c.l.v[1] = big;
+    assert_int_equal(call_model(VEL_NAV_LEVER, &c, &out), SE23_ERR_NONFINITE);
+    /* -R l^ alone (w = 0, z finite): R a turn of pi/4 about z, l = (huge,
+     * -huge, 0): (l x r_1)_2 = huge (cos + sin) = 1.06 max. */
+    random_case(&rng, VEL_NAV_LEVER, &c);
+    const se23_vec3_t turn = {{SE23_R(0), SE23_R(0), SE23_R(0.78539816339744831)}};
+    assert_int_equal(se23_so3_exp(&turn, &c.T.R), SE23_OK);
+    memset(&c.w, 0, sizeof c.w);
+    c.l.v[0] = huge;
+    c.l.v[1] = -huge;
+    c.l.v[2] = SE23_R(0);
+    assert_int_equal(call_model(VEL_NAV_LEVER, &c, &out), SE23_ERR_NONFINITE);
+    /* The same with a moderate lever is accepted (the refusal above is
+     * the overflow, not the input). */
+    c.l.v[0] = SE23_R(1);
+    c.l.v[1] = SE23_R(-1);
+    se23_meas_t ok;
+    assert_int_equal(call_model(VEL_NAV_LEVER, &c, &ok), SE23_OK);
+    /* w_meas + b_g overflows. */
+    random_case(&rng, ZERO_RATE, &c);
+    c.w.v[2] = huge;
+    c.b_g.v[2] = huge;
+    assert_int_equal(call_model(ZERO_RATE, &c, &out), SE23_ERR_NONFINITE);
+    /* The residual of the position model: p_n - p. */
+    random_case(&rng, POS_NAV, &c);
+    c.y.v[0] = huge;
+    c.T.p.v[0] = -huge;
+    assert_int_equal(call_model(POS_NAV, &c, &out), SE23_ERR_NONFINITE);
+    assert_memory_equal(&out, &out0, sizeof out);
+}
+
+/* Every element of the output is written: rows beyond m = 3 and the
+ * untouched bias columns are zero whatever the buffer held. */
 static void test_meas_models_define_every_element(void **state)
 {
     (void)state;
     se23t_rng_t rng;
     se23t_rng_seed(&rng, 703);
-    se23_pose_t T;
-    se23_vec3_t y, l = {{SE23_R(0.1), SE23_R(-0.2), SE23_R(0.3)}};
-    se23_mat3_t cov;
-    se23t_random_pose(&rng, 5.0, &T);
-    se23t_random_vec3(&rng, 5.0, &y);
-    gt_random_cov(&rng, 3, 3, 3, 1.0, 0.1, &cov.m[0][0]);
-    for (int which = POS_NAV; which <= VEL_BODY; ++which) {
+    for (int which = POS_NAV; which < N_MODELS; ++which) {
+        const model_t w = (model_t)which;
+        const int bias_cols = (w == VEL_NAV_LEVER || w == ZERO_RATE) ? SE23_IDX_BA : SE23_IDX_BG;
+        case_t c;
         se23_meas_t out;
+        random_case(&rng, w, &c);
         memset(&out, SENTINEL, sizeof out);
-        assert_int_equal(call_model((model_t)which, &T, &y, &l, &cov, &out), SE23_OK);
+        assert_int_equal(call_model(w, &c, &out), SE23_OK);
         for (int i = 0; i < M; ++i) {
             if (i >= 3) {
                 assert_true(out.z[i] == SE23_R(0));
             }
             for (int j = 0; j < S; ++j) {
-                if (i >= 3 || j >= 9) {
+                if (i >= 3 || j >= bias_cols) {
                     assert_true(out.H[S * i + j] == SE23_R(0));
                 }
             }
@@ -221,14 +455,100 @@ static void test_meas_cov_check_tolerance_boundaries(void **state)
         cov.m[0][2] = (se23_real_t)(k * tol);
         assert_int_equal(se23_meas_pos_nav(&T, &y, &l, &cov, &out),
                          side ? SE23_ERR_NOT_SYMMETRIC : SE23_OK);
+        assert_int_equal(se23_meas_zero_rate(&y, &l, &cov, &out),
+                         side ? SE23_ERR_NOT_SYMMETRIC : SE23_OK);
         /* diag(1, 1, -k tol): smallest eigenvalue -k tol s, s = 1. */
         se23_mat3_t neg = {{{SE23_R(1), 0, 0}, {0, SE23_R(1), 0}, {0, 0, (se23_real_t)(-k * tol)}}};
         assert_int_equal(se23_meas_pos_nav(&T, &y, &l, &neg, &out),
+                         side ? SE23_ERR_NOT_PSD : SE23_OK);
+        assert_int_equal(se23_meas_zero_rate(&y, &l, &neg, &out),
                          side ? SE23_ERR_NOT_PSD : SE23_OK);
     }
     /* The zero matrix (an exact measurement) is valid. */
     const se23_mat3_t zero = {{{0}}};
     assert_int_equal(se23_meas_pos_nav(&T, &y, &l, &zero, &out), SE23_OK);
+}
+
+/* ZARU in a 15-state filter: each update lowers the gyro-bias variances
+ * and moves bbar_g toward -w_meas (the true rate at rest is 0), the
+ * distance shrinking by the factor r / (P_bb + r) of an isotropic noise;
+ * repeated, bbar_g converges to -w_meas. With n = 9 the update leaves the
+ * state as it was (H's first 9 columns are zero). */
+static void test_meas_zero_rate_update_estimates_gyro_bias(void **state)
+{
+    (void)state;
+    se23t_rng_t rng;
+    se23t_rng_seed(&rng, 707);
+    se23_gauss_t g;
+    gt_random_gauss(&rng, 15, &g);
+    const se23_vec3_t w_meas = {{SE23_R(0.012), SE23_R(-0.021), SE23_R(0.0053)}};
+    const se23_real_t r = SE23_R(1e-6);
+    const se23_mat3_t cov = {{{r, 0, 0}, {0, r, 0}, {0, 0, r}}};
+    double dist = 0;
+    for (int i = 0; i < 3; ++i) {
+        const double d = (double)g.b_g.v[i] + (double)w_meas.v[i];
+        dist += d * d;
+    }
+    for (int k = 0; k < 20; ++k) {
+        se23_meas_t y;
+        se23_gauss_t out;
+        assert_int_equal(se23_meas_zero_rate(&w_meas, &g.b_g, &cov, &y), SE23_OK);
+        assert_int_equal(se23_kalman_update(&g, &y, &out, NULL), SE23_OK);
+        double nd = 0;
+        for (int i = 0; i < 3; ++i) {
+            const int b = SE23_IDX_BG + i;
+            assert_true(out.P.m[S * b + b] < g.P.m[S * b + b]);
+            const double d = (double)out.b_g.v[i] + (double)w_meas.v[i];
+            nd += d * d;
+        }
+        assert_true(nd < dist);
+        dist = nd;
+        g = out;
+    }
+    /* After 20 updates: P_bb ~ r / 20 per axis, the distance ~ r / P_bb0
+     * of the start at most (P_bb0 >= 1e-3 here) and far below |w_meas|. */
+    assert_true(sqrt(dist) < 1e-3 * 0.025);
+    for (int i = 0; i < 3; ++i) {
+        const int b = SE23_IDX_BG + i;
+        assert_true(g.P.m[S * b + b] < 2.0 * (double)r / 20.0 + 1e-9);
+    }
+    /* n = 9: nothing moves. */
+    se23_gauss_t g9, out9;
+    gt_random_gauss(&rng, 9, &g9);
+    se23_meas_t y;
+    assert_int_equal(se23_meas_zero_rate(&w_meas, &g9.b_g, &cov, &y), SE23_OK);
+    assert_int_equal(se23_kalman_update(&g9, &y, &out9, NULL), SE23_OK);
+    assert_memory_equal(&out9.T, &g9.T, sizeof g9.T);
+    for (int i = 0; i < 9; ++i) {
+        assert_memory_equal(&out9.P.m[S * i], &g9.P.m[S * i], sizeof(se23_real_t) * 9);
+    }
+}
+
+/* The lever model with n = 9: the b_g columns are ignored, the update is
+ * that of the same H without them, bit for bit (kalman.h). */
+static void test_meas_vel_nav_lever_n9_ignores_bias_columns(void **state)
+{
+    (void)state;
+    se23t_rng_t rng;
+    se23t_rng_seed(&rng, 708);
+    se23_gauss_t g, a, b;
+    gt_random_gauss(&rng, 9, &g);
+    case_t c;
+    random_case(&rng, VEL_NAV_LEVER, &c);
+    c.T = g.T;
+    se23_meas_t y;
+    assert_int_equal(call_model(VEL_NAV_LEVER, &c, &y), SE23_OK);
+    assert_int_equal(se23_kalman_update(&g, &y, &a, NULL), SE23_OK);
+    for (int i = 0; i < 3; ++i) {
+        for (int j = SE23_IDX_BG; j < S; ++j) {
+            y.H[S * i + j] = SE23_R(0);
+        }
+    }
+    assert_int_equal(se23_kalman_update(&g, &y, &b, NULL), SE23_OK);
+    assert_memory_equal(&a.T, &b.T, sizeof a.T);
+    for (int i = 0; i < 9; ++i) {
+        assert_memory_equal(&a.P.m[S * i], &b.P.m[S * i], sizeof(se23_real_t) * 9);
+    }
 }
 
 static void test_meas_null_arguments_return_err_null(void **state)
@@ -249,10 +569,20 @@ static void test_meas_null_arguments_return_err_null(void **state)
     assert_int_equal(se23_meas_vel_nav(&T, NULL, &cov, &out), SE23_ERR_NULL);
     assert_int_equal(se23_meas_vel_nav(&T, &y, NULL, &out), SE23_ERR_NULL);
     assert_int_equal(se23_meas_vel_nav(&T, &y, &cov, NULL), SE23_ERR_NULL);
+    assert_int_equal(se23_meas_vel_nav_lever(NULL, &y, &y, &y, &cov, &out), SE23_ERR_NULL);
+    assert_int_equal(se23_meas_vel_nav_lever(&T, NULL, &y, &y, &cov, &out), SE23_ERR_NULL);
+    assert_int_equal(se23_meas_vel_nav_lever(&T, &y, NULL, &y, &cov, &out), SE23_ERR_NULL);
+    assert_int_equal(se23_meas_vel_nav_lever(&T, &y, &y, NULL, &cov, &out), SE23_ERR_NULL);
+    assert_int_equal(se23_meas_vel_nav_lever(&T, &y, &y, &y, NULL, &out), SE23_ERR_NULL);
+    assert_int_equal(se23_meas_vel_nav_lever(&T, &y, &y, &y, &cov, NULL), SE23_ERR_NULL);
     assert_int_equal(se23_meas_vel_body(NULL, &y, &cov, &out), SE23_ERR_NULL);
     assert_int_equal(se23_meas_vel_body(&T, NULL, &cov, &out), SE23_ERR_NULL);
     assert_int_equal(se23_meas_vel_body(&T, &y, NULL, &out), SE23_ERR_NULL);
     assert_int_equal(se23_meas_vel_body(&T, &y, &cov, NULL), SE23_ERR_NULL);
+    assert_int_equal(se23_meas_zero_rate(NULL, &y, &cov, &out), SE23_ERR_NULL);
+    assert_int_equal(se23_meas_zero_rate(&y, NULL, &cov, &out), SE23_ERR_NULL);
+    assert_int_equal(se23_meas_zero_rate(&y, &y, NULL, &out), SE23_ERR_NULL);
+    assert_int_equal(se23_meas_zero_rate(&y, &y, &cov, NULL), SE23_ERR_NULL);
 #else
     skip();
 #endif
@@ -262,10 +592,15 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_meas_models_match_central_differences),
+        cmocka_unit_test(test_meas_new_models_blocks),
         cmocka_unit_test(test_meas_vel_body_is_zero_velocity_update),
+        cmocka_unit_test(test_meas_zupt_and_zero_lever_are_vel_nav),
         cmocka_unit_test(test_meas_models_reject_bad_input_untouched),
+        cmocka_unit_test(test_meas_models_refuse_overflow_untouched),
         cmocka_unit_test(test_meas_models_define_every_element),
         cmocka_unit_test(test_meas_cov_check_tolerance_boundaries),
+        cmocka_unit_test(test_meas_zero_rate_update_estimates_gyro_bias),
+        cmocka_unit_test(test_meas_vel_nav_lever_n9_ignores_bias_columns),
         cmocka_unit_test(test_meas_null_arguments_return_err_null),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -172,6 +172,9 @@ struct Gen {
     std::function<int(const Ctx &, const Row &in, Row &out)> expect;
     // error scales of an output row; empty: the largest |expected| of the row
     Scale scale = nullptr;
+    // instead of scale, when the error of an output is relative to an input
+    // too (an update out = in + d that cancels): scales from (in, out)
+    std::function<Row(const Row &in, const Row &out)> scale_io = nullptr;
 };
 
 inline LD max_abs(const Row &r, size_t from, size_t n)

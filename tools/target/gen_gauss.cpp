@@ -576,6 +576,70 @@ int meas_model_status(const Ctx &c, const Row &in, const Mat5L &T, const Mat3L &
     return cov_status(cov, c);
 }
 
+using Mat315L = Eigen::Matrix<LD, 3, 15>;
+const LD kInf = std::numeric_limits<LD>::infinity();
+
+// Largest finite value of the target's precision.
+LD real_max(const Ctx &c)
+{
+    return c.is_float ? LD(std::numeric_limits<float>::max()) : LD(std::numeric_limits<double>::max());
+}
+// A residual or Jacobian entry the precision cannot hold: the models refuse
+// it (SE23_ERR_NONFINITE, kalman.h).
+bool overflows(const Ctx &c, const Vec3L &z, const Mat315L &H)
+{
+    return !(z.cwiseAbs().maxCoeff() <= real_max(c) && H.cwiseAbs().maxCoeff() <= real_max(c));
+}
+
+// Inputs of se23_meas_vel_nav_lever: T, w_b, lever_b, v_n, cov. Edges: NaN
+// in v_n, T.R not a rotation, cov not symmetric, cov not PSD, Inf in w_b,
+// |w_b x lever_b| beyond the precision's range (finite inputs).
+Row meas_lever_input(Ctx &c, int k)
+{
+    Mat5L T = pose_k(c, k + n_angles());
+    Mat3L cov = Mat3L(spd(c, 3, 1.0L));
+    Vec3L w = vec3_any(c, 2), l = vec3_any(c, 2);
+    Vec3L v = vec3_any(c, 20);
+    if (k == 0) v(1) = kNaN;
+    if (k == 1) T.block<3, 3>(0, 0) *= LD(1.01);
+    if (k == 2) cov(0, 2) += LD(0.1) * cov(0, 0);
+    if (k == 3) cov(1, 1) = -cov(1, 1);
+    if (k == 4) w(2) = kInf;
+    if (k == 5) {
+        const LD big = c.is_float ? LD(1e30L) : LD(1e200L);
+        w = Vec3L(big, 0, 0);
+        l = Vec3L(0, big, 0);
+    }
+    Row r;
+    put_pose(r, T);
+    put(r, w);
+    put(r, l);
+    put(r, v);
+    put(r, cov);
+    return r;
+}
+
+// Inputs of se23_meas_zero_rate: w_meas, b_g, cov. Edges: NaN in w_meas, Inf
+// in b_g, cov not symmetric, cov not PSD, w_meas + b_g beyond the range.
+Row meas_rate_input(Ctx &c, int k)
+{
+    Mat3L cov = Mat3L(spd(c, 3, 1e-6L));
+    Vec3L w = vec3_any(c, 0.05L), b = vec3_any(c, 0.05L);
+    if (k == 0) w(0) = kNaN;
+    if (k == 1) b(2) = -kInf;
+    if (k == 2) cov(0, 2) += LD(0.1) * cov(0, 0);
+    if (k == 3) cov(1, 1) = -cov(1, 1);
+    if (k == 4) {
+        w(1) = LD(0.75) * real_max(c);
+        b(1) = w(1);
+    }
+    Row r;
+    put(r, w);
+    put(r, b);
+    put(r, cov);
+    return r;
+}
+
 } // namespace
 
 void add_kalman(Gens &g)
@@ -625,6 +689,43 @@ void add_kalman(Gens &g)
                                    put_meas(out, meas3(Vec3L(v_b - h), H, cov));
                                    return int(SE23_OK);
                                }};
+    // h = v + R (w x l), w = w_b + db_g; to first order in (phi, nu, db_g)
+    // with R = Rbar exp(phi^), v = vbar + Rbar nu: Rbar phi^ u = -Rbar u^ phi
+    // (u = w_b x l), Rbar (db_g x l) = -Rbar l^ db_g.
+    g["se23_meas_vel_nav_lever"] = {6, meas_lever_input, [](const Ctx &c, const Row &in, Row &out) {
+                                        Rd rd{in};
+                                        const Mat5L T = rd.pose();
+                                        const Vec3L w = rd.v3(), l = rd.v3(), v_n = rd.v3();
+                                        const Mat3L cov = rd.m3();
+                                        const int st = meas_model_status(c, in, T, cov);
+                                        if (st != SE23_OK) return st;
+                                        const Mat3L R = T.block<3, 3>(0, 0);
+                                        const Vec3L u = w.cross(l);
+                                        const Vec3L h = Vec3L(T.block<3, 1>(0, 3)) + R * u;
+                                        Mat315L H = Mat315L::Zero();
+                                        H.block<3, 3>(0, 0) = -R * hat3(u);
+                                        H.block<3, 3>(0, 3) = R;
+                                        H.block<3, 3>(0, 9) = -R * hat3(l);
+                                        const Vec3L z = v_n - h;
+                                        if (overflows(c, z, H)) return int(SE23_ERR_NONFINITE);
+                                        put_meas(out, meas3(z, H, cov));
+                                        return int(SE23_OK);
+                                    }};
+    // y = 0 (true rate at rest), h = w_meas + b_g, H = [0, 0, 0, I, 0].
+    g["se23_meas_zero_rate"] = {5, meas_rate_input, [](const Ctx &c, const Row &in, Row &out) {
+                                    Rd rd{in};
+                                    const Vec3L w = rd.v3(), b = rd.v3();
+                                    const Mat3L cov = rd.m3();
+                                    if (!all_finite(in)) return int(SE23_ERR_NONFINITE);
+                                    const int st = cov_status(cov, c);
+                                    if (st != SE23_OK) return st;
+                                    Mat315L H = Mat315L::Zero();
+                                    H.block<3, 3>(0, 9) = Mat3L::Identity();
+                                    const Vec3L z = -(w + b);
+                                    if (overflows(c, z, H)) return int(SE23_ERR_NONFINITE);
+                                    put_meas(out, meas3(z, H, cov));
+                                    return int(SE23_OK);
+                                }};
     g["se23_kalman_update"] = {
         kGaussEdges + 4,
         [](Ctx &c, int k) {
@@ -701,15 +802,29 @@ void add_kalman(Gens &g)
             put(out, LD((z.transpose() * S.inverse() * z)(0, 0)));
             return int(SE23_OK);
         }};
-    for (const char *n : {"se23_meas_pos_nav", "se23_meas_vel_nav", "se23_meas_vel_body"}) {
+    for (const char *n : {"se23_meas_pos_nav", "se23_meas_vel_nav", "se23_meas_vel_body",
+                          "se23_meas_vel_nav_lever", "se23_meas_zero_rate"}) {
         g[n].scale = scale_meas();
     }
-    g["se23_kalman_update"].scale = scale_concat({{TV_GAUSS_REALS - 225, scale_concat({{15, scale_pose()},
-                                                                                      {3, scale_blocks({3})},
-                                                                                      {3, scale_blocks({3})},
-                                                                                      {1, scale_blocks({1})}})},
-                                                  {225, scale_cov(15)},
-                                                  {1, scale_blocks({1})}});
+    const Scale update_out = scale_concat({{TV_GAUSS_REALS - 225, scale_concat({{15, scale_pose()},
+                                                                               {3, scale_blocks({3})},
+                                                                               {3, scale_blocks({3})},
+                                                                               {1, scale_blocks({1})}})},
+                                           {225, scale_cov(15)},
+                                           {1, scale_blocks({1})}});
+    // The mean's vectors are sums v+ = v + d: their rounding is relative to
+    // the operands, |v| and |d| <= |v| + |v+|, not to |v+| alone (a bias
+    // correction can cancel most of the bias). Each of the blocks v, p,
+    // b_g, b_a (reals 9..20, the same place in the input row) is scaled by
+    // the larger of its input and output magnitudes.
+    g["se23_kalman_update"].scale_io = [update_out](const Row &in, const Row &out) {
+        Row s = update_out(out);
+        for (size_t at = 9; at < 21; at += 3) {
+            const LD m = max_abs(in, at, 3);
+            for (size_t i = at; i < at + 3; ++i) s[i] = std::max(s[i], m);
+        }
+        return s;
+    };
 }
 
 } // namespace gen

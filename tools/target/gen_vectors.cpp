@@ -99,7 +99,9 @@ void emit(Ctx &c, const ListRow &lr, const Gen &g, const std::string &corrupt)
             corrupted = true;
         }
         Row sc = s != SE23_OK ? Row(out.size(), 0)
-                 : g.scale ? g.scale(out) : Row(out.size(), max_abs(out, 0, out.size()));
+                 : g.scale_io ? g.scale_io(in, out)
+                 : g.scale    ? g.scale(out)
+                              : Row(out.size(), max_abs(out, 0, out.size()));
         if (sc.size() != out.size()) {
             throw std::runtime_error(std::string(lr.name) + ": scale row size differs from the output");
         }
