@@ -1,8 +1,9 @@
 /*
- * se23-ins: the INS node. Subscribes to IMU samples, GNSS fixes and the
- * initial state over LCM, runs the se23 library (ins.h), and publishes the
- * navigation state with its 15x15 covariance and, on request,
- * preintegrated factors. Prints an accounting of every input at the end.
+ * se23-ins: the INS node, a thin LCM adapter around the library's filter
+ * (se23/ins.h): decodes IMU samples, GNSS fixes and the initial state,
+ * calls the filter, and publishes the navigation state with its 15x15
+ * covariance and, on request, preintegrated factors. Prints the filter's
+ * accounting of every input at the end. No navigation logic lives here.
  *
  * Run with --help for the options.
  */
@@ -15,8 +16,8 @@
 #include <time.h>
 
 #include "../lcm/harness.h"
-#include "ins.h"
 #include "replay.h"
+#include "se23/ins.h"
 #include "se23lcm_gnss_fix.h"
 #include "se23lcm_imu_sample.h"
 #include "se23lcm_nav_state.h"
@@ -36,12 +37,13 @@ typedef struct {
 } node_opts_t;
 
 typedef struct {
-    ins_t ins;
+    se23_ins_t ins;
     node_opts_t o;
     lcm_t *out;
     int64_t nav_every; /* publish when seq % nav_every == 0 */
     int publish_due;
     int ended;
+    int64_t decode_errors; /* messages that failed to decode (any channel) */
     harness_progress_t pr;
 } node_t;
 
@@ -59,6 +61,11 @@ static void usage(FILE *f)
             "  --bias-states on|off  15-state filter with bias states (on)\n"
             "  --nav-rate HZ         nav_state output rate (50)\n"
             "  --gate X              chi-square gate on GNSS innovations, 0 = none (30)\n"
+            "  --gate-recover N      reset position/velocity to the fix after N\n"
+            "                        consecutive gated fixes, 0 = never (5)\n"
+            "  --lever X,Y,Z         GNSS antenna lever arm, body frame [m] (0,0,0)\n"
+            "  --delay-horizon S     fuse fixes up to S s late at their own time (0.25;\n"
+            "                        the ring holds 2 S of samples at the IMU rate)\n"
             "  --max-gap S           longest interval one sample may bridge (25 samples)\n"
             "  --max-outage S        longest outage carried across (10)\n"
             "  --preint S            publish preintegrated factors of S seconds (0 = off)\n"
@@ -68,25 +75,30 @@ static void usage(FILE *f)
             "  --progress            progress line on stderr\n");
 }
 
-static int parse_args(int argc, char **argv, node_opts_t *o, ins_config_t *c)
+static int parse_args(int argc, char **argv, node_opts_t *o, se23_ins_config_t *c)
 {
     const double inf = HUGE_VAL;
-    double rate = 200.0, lat_deg = 45.0, max_gap = -1.0;
-    int profile = HARNESS_IMU_MEMS;
+    double rate = 200.0, lat_deg = 45.0, max_gap = -1.0, gate = 30.0, horizon = 0.25;
+    double max_outage = 10.0, preint = 0.0, lever[3] = {0.0, 0.0, 0.0};
+    int64_t recover = 5;
+    int profile = HARNESS_IMU_MEMS, earth = 1, bias = 1, i;
     const harness_imu_profile_t *prof;
     const harness_opt_t opts[] = {
         {"--in", HOPT_STR, &o->in_url, 0, 0, NULL},
         {"--out", HOPT_STR, &o->out_url, 0, 0, NULL},
         {"--imu", HOPT_CHOICE, &profile, 0, 0, harness_imu_profile_find},
         {"--imu-rate", HOPT_DOUBLE, &rate, 1.0, 1e5, NULL},
-        {"--earth", HOPT_CHOICE, &c->earth_rotation, 0, 0, harness_on_off},
+        {"--earth", HOPT_CHOICE, &earth, 0, 0, harness_on_off},
         {"--lat", HOPT_DOUBLE, &lat_deg, -90.0, 90.0, NULL},
-        {"--bias-states", HOPT_CHOICE, &c->bias_states, 0, 0, harness_on_off},
+        {"--bias-states", HOPT_CHOICE, &bias, 0, 0, harness_on_off},
         {"--nav-rate", HOPT_DOUBLE, &o->nav_rate, 1e-3, inf, NULL},
-        {"--gate", HOPT_DOUBLE, &c->gnss_gate, 0.0, inf, NULL},
+        {"--gate", HOPT_DOUBLE, &gate, 0.0, inf, NULL},
+        {"--gate-recover", HOPT_I64, &recover, 0, 0, NULL},
+        {"--lever", HOPT_VEC3, lever, -100.0, 100.0, NULL},
+        {"--delay-horizon", HOPT_DOUBLE, &horizon, 0.0, 10.0, NULL},
         {"--max-gap", HOPT_DOUBLE, &max_gap, 1e-6, 1.0, NULL},
-        {"--max-outage", HOPT_DOUBLE, &c->max_outage, 0.0, inf, NULL},
-        {"--preint", HOPT_DOUBLE, &c->preint_window, 0.0, inf, NULL},
+        {"--max-outage", HOPT_DOUBLE, &max_outage, 0.0, (double)SE23_INS_MAX_OUTAGE, NULL},
+        {"--preint", HOPT_DOUBLE, &preint, 0.0, inf, NULL},
         {"--idle-timeout", HOPT_DOUBLE, &o->idle_timeout, 0.0, inf, NULL},
         {"--ready-file", HOPT_STR, &o->ready_file, 0, 0, NULL},
         {"--exit-on-end", HOPT_FLAG, &o->exit_on_end, 1, 0, NULL},
@@ -99,21 +111,19 @@ static int parse_args(int argc, char **argv, node_opts_t *o, ins_config_t *c)
     o->exit_on_end = 0;
     o->idle_timeout = 0.0;
     o->ready_file = NULL;
-    memset(c, 0, sizeof *c);
-    c->earth_rotation = 1;
-    c->bias_states = 1;
-    c->max_outage = 10.0;
-    c->outage_accel = 1.0;
-    c->outage_rate = 0.05;
-    c->gnss_gate = 30.0;
     if (harness_parse_opts("se23-ins", argc, argv, opts, (int)(sizeof opts / sizeof opts[0]),
                            usage, NULL, NULL) != 0) {
+        return -1;
+    }
+    if (recover < 0 || recover > 1000000) {
+        fprintf(stderr, "se23-ins: --gate-recover must be in [0, 1e6]\n");
         return -1;
     }
     prof = harness_imu_profile(profile);
     if (o->out_url == NULL) {
         o->out_url = strncmp(o->in_url, "file://", 7) == 0 ? "file://ins.log?mode=w" : o->in_url;
     }
+    memset(c, 0, sizeof *c);
     c->noise.gyro_noise = prof->gyro_noise;
     c->noise.accel_noise = prof->accel_noise;
     c->noise.gyro_walk = prof->gyro_bias_rw;
@@ -121,53 +131,82 @@ static int parse_args(int argc, char **argv, node_opts_t *o, ins_config_t *c)
     c->gyro_range = prof->gyro_range;
     c->accel_range = prof->accel_range;
     c->lat = lat_deg * DEG;
+    c->earth_rotation = earth;
+    c->bias_states = bias;
     c->dt_nominal = 1.0 / rate;
     c->max_gap = max_gap > 0.0 ? max_gap : fmin(25.0 / rate, 1.0);
     if (c->max_gap < c->dt_nominal) {
         c->max_gap = c->dt_nominal;
     }
+    c->max_outage = max_outage;
+    c->outage_accel = 1.0;
+    c->outage_rate = 0.05;
+    for (i = 0; i < 3; i++) {
+        c->lever_b.v[i] = lever[i];
+    }
+    c->gnss_gate = gate;
+    c->gate_recover = (int)recover;
+    c->delay_horizon = horizon;
+    c->preint_window = preint;
     return 0;
+}
+
+/* The LCM message's counters from the filter's (and the adapter's own). */
+static void put_counters(const node_t *nd, se23lcm_nav_state *m)
+{
+    const se23_ins_counters_t *c = &nd->ins.c;
+    m->n_imu_used = c->imu_used;
+    m->n_imu_nonfinite = c->imu_nonfinite;
+    m->n_imu_range = c->imu_range;
+    m->n_imu_duplicate = c->imu_duplicate;
+    m->n_imu_out_of_order = c->imu_out_of_order;
+    m->n_imu_bad_time = c->imu_bad_time;
+    m->n_imu_bad_dt = c->imu_bad_dt;
+    m->n_imu_missing = c->imu_missing;
+    m->n_imu_early = (int64_t)c->imu_early + c->imu_align;
+    m->n_decode_errors = nd->decode_errors;
+    m->n_gnss_used = c->gnss_used;
+    m->n_gnss_rejected = (int64_t)c->gnss_early + c->gnss_nonfinite + c->gnss_stale +
+                         c->gnss_gated + c->gnss_pending_dropped;
+    m->n_time_resets = c->time_resets;
+    m->n_filter_errors = c->filter_errors;
+    m->n_init_rejected = c->init_rejected;
 }
 
 static void publish_nav(node_t *nd)
 {
-    ins_output_t out;
+    static se23_gauss_t g; /* 1.9 kB: off the stack */
     se23lcm_nav_state m;
-    const ins_counters_t *c = &nd->ins.c;
+    int64_t t_ns;
+    int i, j;
     nd->publish_due = 0;
-    if (ins_output(&nd->ins, &out) != 0) {
+    if (se23_ins_state(&nd->ins, &g, &t_ns) != SE23_OK) {
         return;
     }
     memset(&m, 0, sizeof m);
-    m.t_ns = out.t_ns;
-    m.seq = out.seq;
-    memcpy(m.R_nb, out.R_nb, sizeof m.R_nb);
-    memcpy(m.v_n, out.v_n, sizeof m.v_n);
-    memcpy(m.p_n, out.p_n, sizeof m.p_n);
-    memcpy(m.b_g, out.b_g, sizeof m.b_g);
-    memcpy(m.b_a, out.b_a, sizeof m.b_a);
-    memcpy(m.P, out.P, sizeof m.P);
-    m.status = out.status;
-    m.n_imu_used = c->imu_used;
-    m.n_imu_nonfinite = c->imu_nonfinite;
-    m.n_imu_range = c->imu_range;
-    m.n_imu_duplicate = c->imu_duplicate;
-    m.n_imu_out_of_order = c->imu_out_of_order;
-    m.n_imu_bad_time = c->imu_bad_time;
-    m.n_imu_bad_dt = c->imu_bad_dt;
-    m.n_imu_missing = c->imu_missing;
-    m.n_imu_early = c->imu_early;
-    m.n_decode_errors = c->decode_errors;
-    m.n_gnss_used = c->gnss_used;
-    m.n_gnss_rejected = c->gnss_rejected;
-    m.n_time_resets = c->time_resets;
-    m.n_filter_errors = c->filter_errors;
-    m.n_init_rejected = c->init_rejected;
-    m.nis_last = out.nis_last;
+    m.t_ns = t_ns;
+    m.seq = nd->ins.seq;
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) {
+            m.R_nb[3 * i + j] = g.T.R.m[i][j];
+        }
+        m.v_n[i] = g.T.v.v[i];
+        m.p_n[i] = g.T.p.v[i];
+        m.b_g[i] = g.b_g.v[i];
+        m.b_a[i] = g.b_a.v[i];
+    }
+    for (i = 0; i < g.n; i++) {
+        for (j = 0; j < g.n; j++) {
+            m.P[15 * i + j] = g.P.m[SE23_GAUSS_NMAX * i + j];
+        }
+    }
+    m.status = (int32_t)nd->ins.status;
+    put_counters(nd, &m);
+    m.nis_last = nd->ins.nis_last;
     se23lcm_nav_state_publish(nd->out, HARNESS_CH_NAV, &m);
 }
 
-static void publish_factor(node_t *nd, const ins_factor_t *f)
+static void publish_factor(node_t *nd, const se23_ins_factor_t *f)
 {
     se23lcm_preint_factor m;
     int i, j;
@@ -175,59 +214,68 @@ static void publish_factor(node_t *nd, const ins_factor_t *f)
     m.t0_ns = f->t0_ns;
     m.t1_ns = f->t1_ns;
     m.seq0 = f->seq0;
-    m.n_samples = (int32_t)f->f.n;
-    m.dt_s = f->f.dt;
+    m.n_samples = (int32_t)f->f.f.n;
+    m.dt_s = f->f.f.dt;
     for (i = 0; i < 3; i++) {
         for (j = 0; j < 3; j++) {
-            m.dR[3 * i + j] = f->f.delta.R.m[i][j];
+            m.dR[3 * i + j] = f->f.f.delta.R.m[i][j];
         }
-        m.dv[i] = f->f.delta.v.v[i];
-        m.dp[i] = f->f.delta.p.v[i];
-        m.b_g_lin[i] = f->b_g_lin[i];
-        m.b_a_lin[i] = f->b_a_lin[i];
+        m.dv[i] = f->f.f.delta.v.v[i];
+        m.dp[i] = f->f.f.delta.p.v[i];
+        m.b_g_lin[i] = f->f.b_g.v[i];
+        m.b_a_lin[i] = f->f.b_a.v[i];
     }
     for (i = 0; i < 81; i++) {
-        m.cov[i] = f->cov.m[i];
+        m.cov[i] = f->f.P.m[i];
     }
     for (i = 0; i < 54; i++) {
-        m.J_bias[i] = f->J.m[i];
+        m.J_bias[i] = f->f.J.m[i];
     }
     se23lcm_preint_factor_publish(nd->out, HARNESS_CH_PREINT, &m);
 }
 
+static int64_t imu_rejected(const se23_ins_counters_t *c)
+{
+    return (int64_t)c->imu_nonfinite + c->imu_range + c->imu_duplicate + c->imu_out_of_order +
+           c->imu_bad_time + c->imu_bad_dt;
+}
+
 static void progress(node_t *nd, int final)
 {
-    const ins_counters_t *c = &nd->ins.c;
+    const se23_ins_counters_t *c = &nd->ins.c;
     if (!nd->o.progress) {
         return;
     }
     harness_progress(&nd->pr, final, "se23-ins: t = %7.1f s  samples %lld  rejected %lld  gnss %lld",
                      (double)nd->ins.t_ns * 1e-9, (long long)c->imu_used,
-                     (long long)(c->imu_nonfinite + c->imu_range + c->imu_duplicate +
-                                 c->imu_out_of_order + c->imu_bad_time + c->imu_bad_dt),
-                     (long long)c->gnss_used);
+                     (long long)imu_rejected(c), (long long)c->gnss_used);
 }
 
 static void on_imu(const lcm_recv_buf_t *rb, const char *ch, void *user)
 {
+    static se23_ins_factor_t f; /* off the stack */
     node_t *nd = user;
     se23lcm_imu_sample m;
+    se23_vec3_t w, a;
+    int i;
     (void)ch;
     if (se23lcm_imu_sample_decode(rb->data, 0, (int)rb->data_size, &m) < 0) {
-        ins_decode_error(&nd->ins);
+        nd->decode_errors++;
         return;
     }
     if (nd->publish_due) { /* the state at t_last, with any fix applied there */
         publish_nav(nd);
     }
-    if (ins_imu(&nd->ins, m.t_ns, m.seq, m.omega, m.accel) && nd->ins.seq % nd->nav_every == 0) {
+    for (i = 0; i < 3; i++) {
+        w.v[i] = m.omega[i];
+        a.v[i] = m.accel[i];
+    }
+    if (se23_ins_imu(&nd->ins, m.t_ns, m.seq, &w, &a) == SE23_INS_USED &&
+        nd->ins.seq % nd->nav_every == 0) {
         nd->publish_due = 1;
     }
-    {
-        ins_factor_t f;
-        if (ins_take_factor(&nd->ins, &f)) {
-            publish_factor(nd, &f);
-        }
+    if (se23_ins_take_factor(&nd->ins, &f)) {
+        publish_factor(nd, &f);
     }
     progress(nd, 0);
 }
@@ -236,39 +284,52 @@ static void on_gnss(const lcm_recv_buf_t *rb, const char *ch, void *user)
 {
     node_t *nd = user;
     se23lcm_gnss_fix m;
-    ins_gnss_t fix;
+    se23_ins_gnss_t fix;
+    int i;
     (void)ch;
     if (se23lcm_gnss_fix_decode(rb->data, 0, (int)rb->data_size, &m) < 0) {
-        ins_decode_error(&nd->ins);
+        nd->decode_errors++;
         return;
     }
     fix.t_ns = m.t_ns;
-    memcpy(fix.p_n, m.p_n, sizeof fix.p_n);
-    memcpy(fix.v_n, m.v_n, sizeof fix.v_n);
-    memcpy(fix.sigma_p, m.sigma_p, sizeof fix.sigma_p);
-    memcpy(fix.sigma_v, m.sigma_v, sizeof fix.sigma_v);
+    for (i = 0; i < 3; i++) {
+        fix.p_n.v[i] = m.p_n[i];
+        fix.v_n.v[i] = m.v_n[i];
+        fix.sigma_p.v[i] = m.sigma_p[i];
+        fix.sigma_v.v[i] = m.sigma_v[i];
+    }
     fix.has_vel = m.has_vel != 0;
-    ins_gnss(&nd->ins, &fix);
+    (void)se23_ins_gnss(&nd->ins, &fix);
 }
 
 static void on_init(const lcm_recv_buf_t *rb, const char *ch, void *user)
 {
+    static se23_gauss_t g; /* off the stack */
     node_t *nd = user;
     se23lcm_nav_state m;
-    ins_init_t init;
+    int i, j;
     (void)ch;
     if (se23lcm_nav_state_decode(rb->data, 0, (int)rb->data_size, &m) < 0) {
-        ins_decode_error(&nd->ins);
+        nd->decode_errors++;
         return;
     }
-    init.t_ns = m.t_ns;
-    memcpy(init.R_nb, m.R_nb, sizeof init.R_nb);
-    memcpy(init.v_n, m.v_n, sizeof init.v_n);
-    memcpy(init.p_n, m.p_n, sizeof init.p_n);
-    memcpy(init.b_g, m.b_g, sizeof init.b_g);
-    memcpy(init.b_a, m.b_a, sizeof init.b_a);
-    memcpy(init.P, m.P, sizeof init.P);
-    if (ins_init(&nd->ins, &init) == 0) {
+    memset(&g, 0, sizeof g);
+    g.n = nd->ins.cfg.bias_states ? SE23_GAUSS_N_BIAS : SE23_GAUSS_N_POSE;
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) {
+            g.T.R.m[i][j] = m.R_nb[3 * i + j];
+        }
+        g.T.v.v[i] = m.v_n[i];
+        g.T.p.v[i] = m.p_n[i];
+        g.b_g.v[i] = m.b_g[i];
+        g.b_a.v[i] = m.b_a[i];
+    }
+    for (i = 0; i < g.n; i++) {
+        for (j = 0; j < g.n; j++) {
+            g.P.m[SE23_GAUSS_NMAX * i + j] = m.P[15 * i + j];
+        }
+    }
+    if (se23_ins_init(&nd->ins, m.t_ns, &g) == SE23_OK) {
         nd->publish_due = 1;
     }
 }
@@ -279,7 +340,7 @@ static void on_end(const lcm_recv_buf_t *rb, const char *ch, void *user)
     se23lcm_sim_info m;
     (void)ch;
     if (se23lcm_sim_info_decode(rb->data, 0, (int)rb->data_size, &m) < 0) {
-        ins_decode_error(&nd->ins);
+        nd->decode_errors++;
         return;
     }
     nd->ended = 1;
@@ -294,27 +355,46 @@ static double cpu_seconds(void)
 
 static void summary(const node_t *nd, int64_t skipped, double cpu_s)
 {
-    const ins_counters_t *c = &nd->ins.c;
+    const se23_ins_counters_t *c = &nd->ins.c;
+    const struct {
+        const char *name;
+        uint32_t n;
+    } rows[] = {
+        {"imu_used", c->imu_used},
+        {"imu_nonfinite", c->imu_nonfinite},
+        {"imu_range", c->imu_range},
+        {"imu_duplicate", c->imu_duplicate},
+        {"imu_out_of_order", c->imu_out_of_order},
+        {"imu_bad_time", c->imu_bad_time},
+        {"imu_bad_dt", c->imu_bad_dt},
+        {"imu_missing", c->imu_missing},
+        {"imu_seq_jumps", c->imu_seq_jumps},
+        {"imu_early", c->imu_early},
+        {"imu_align", c->imu_align},
+        {"gnss_used", c->gnss_used},
+        {"gnss_delayed", c->gnss_delayed},
+        {"gnss_early", c->gnss_early},
+        {"gnss_nonfinite", c->gnss_nonfinite},
+        {"gnss_stale", c->gnss_stale},
+        {"gnss_gated", c->gnss_gated},
+        {"gnss_pending_dropped", c->gnss_pending_dropped},
+        {"gate_resets", c->gate_resets},
+        {"zupt_used", c->zupt_used},
+        {"zaru_used", c->zaru_used},
+        {"time_resets", c->time_resets},
+        {"filter_errors", c->filter_errors},
+        {"init_rejected", c->init_rejected},
+    };
+    size_t k;
     printf("se23-ins: input accounting\n");
-    printf("  imu_used          %lld\n", (long long)c->imu_used);
-    printf("  imu_nonfinite     %lld\n", (long long)c->imu_nonfinite);
-    printf("  imu_range         %lld\n", (long long)c->imu_range);
-    printf("  imu_duplicate     %lld\n", (long long)c->imu_duplicate);
-    printf("  imu_out_of_order  %lld\n", (long long)c->imu_out_of_order);
-    printf("  imu_bad_time      %lld\n", (long long)c->imu_bad_time);
-    printf("  imu_bad_dt        %lld\n", (long long)c->imu_bad_dt);
-    printf("  imu_missing       %lld\n", (long long)c->imu_missing);
-    printf("  imu_early         %lld\n", (long long)c->imu_early);
-    printf("  decode_errors     %lld\n", (long long)c->decode_errors);
-    printf("  gnss_used         %lld\n", (long long)c->gnss_used);
-    printf("  gnss_rejected     %lld\n", (long long)c->gnss_rejected);
-    printf("  time_resets       %lld\n", (long long)c->time_resets);
-    printf("  filter_errors     %lld\n", (long long)c->filter_errors);
-    printf("  init_rejected     %lld\n", (long long)c->init_rejected);
-    printf("  log_skipped_bytes %lld\n", (long long)skipped);
-    printf("  status            0x%02x\n", (unsigned)nd->ins.status);
-    printf("  cpu_seconds       %.3f\n", cpu_s);
-    printf("  samples_per_s     %.0f\n", cpu_s > 0.0 ? (double)c->imu_used / cpu_s : 0.0);
+    for (k = 0; k < sizeof rows / sizeof rows[0]; k++) {
+        printf("  %-20s %lld\n", rows[k].name, (long long)rows[k].n);
+    }
+    printf("  %-20s %lld\n", "decode_errors", (long long)nd->decode_errors);
+    printf("  %-20s %lld\n", "log_skipped_bytes", (long long)skipped);
+    printf("  %-20s 0x%03x\n", "status", (unsigned)nd->ins.status);
+    printf("  %-20s %.3f\n", "cpu_seconds", cpu_s);
+    printf("  %-20s %.0f\n", "samples_per_s", cpu_s > 0.0 ? (double)c->imu_used / cpu_s : 0.0);
 }
 
 static const replay_sub_t subs[] = {
@@ -375,8 +455,9 @@ static void run_live(node_t *nd, lcm_t *in)
  */
 int main(int argc, char **argv)
 {
-    static node_t nd; /* large (ins_t holds covariances): not on the stack */
-    ins_config_t cfg;
+    static node_t nd; /* large (the filter holds covariances): not on the stack */
+    se23_ins_config_t cfg;
+    se23_status_t st;
     lcm_t *in = NULL;
     int64_t skipped = 0;
     double cpu0;
@@ -385,8 +466,9 @@ int main(int argc, char **argv)
         usage(stderr);
         return 2;
     }
-    if (ins_setup(&nd.ins, &cfg) != 0) {
-        fprintf(stderr, "se23-ins: invalid configuration\n");
+    if ((st = se23_ins_setup(&cfg, &nd.ins)) != SE23_OK) {
+        fprintf(stderr, "se23-ins: invalid configuration (%s%s)\n", se23_status_str(st),
+                st == SE23_ERR_DIM ? ": --delay-horizon too long for the ring at this rate" : "");
         return 2;
     }
     harness_progress_init(&nd.pr);

@@ -1,0 +1,333 @@
+/**
+ * @file ins.h
+ * @brief The navigation filter: raw IMU samples and aiding measurements in,
+ *        the user's state (R, v, p, biases), its covariance, a status word
+ *        and counters out. Fixed-size, caller-owned, no heap, no globals,
+ *        both precisions. Built on gauss.h (prediction), kalman.h (updates),
+ *        stationary.h (zero-velocity detection) and align.h (alignment).
+ *
+ * State. The filter carries a se23_gauss_t in the model's coordinates: the
+ * carried T' = (R, v + Omega x p, p) on rotating Earth (imu.h), the user's
+ * (R, v, p) on flat Earth. Everything that enters or leaves (init, fixes,
+ * se23_ins_state) is in the user's (R, v, p); the conversion stays inside.
+ *
+ * Time. Timestamps are int64 nanoseconds of the caller's clock, >= 0. An
+ * IMU sample stamped t covers (t_prev, t]: dt = t - t_prev, the time since
+ * the last accepted sample; the state's time is that of the last accepted
+ * sample. Per accepted sample: prediction, the stationary detector, a
+ * zero-velocity (and, with bias states, zero-rate) update when the window
+ * is stationary, then any GNSS fix due at this time.
+ *
+ * Screening of IMU samples, in this order; each rejection is counted in
+ * its own counter and leaves the state untouched (se23_ins_imu returns the
+ * verdict):
+ *   no state yet (not initialised)            -> imu_early
+ *   NaN/Inf in a reading, t < 0 or seq < 0    -> imu_nonfinite
+ *   |w| or |f| beyond the configured range    -> imu_range
+ *   t <= t_last and seq == last               -> imu_duplicate
+ *   t <= t_last and seq <  last               -> imu_out_of_order
+ *   t <= t_last otherwise                     -> imu_bad_time
+ *   dt > max_gap                              -> imu_bad_dt (see "Outage")
+ * While aligning, a finite in-range sample goes to the alignment (imu_align).
+ * A received sample whose seq exceeds the highest seen by k + 1 adds k to
+ * imu_missing, provided k is no more than the samples max_gap can hold
+ * (a larger jump is a corrupted seq, counted in imu_seq_jumps, or a real
+ * outage, confirmed below).
+ *
+ * Outage. When SE23_INS_OUTAGE_CONFIRM consecutive samples all have
+ * dt > max_gap but agree among themselves (consecutive seq, dt <= max_gap
+ * between them), the stream jumped forward: the state is carried across by
+ * holding the last accepted sample (at most max_outage, in steps of the
+ * model's dt_max), the covariance is inflated by the outage dynamics
+ * (outage_rate, outage_accel: 1-sigma unknown rate and acceleration) and
+ * time_resets counts it; status SE23_INS_ST_DEGRADED until the next fix.
+ * A longer outage sets SE23_INS_ST_LOST: the filter then waits for a new
+ * init or alignment.
+ *
+ * GNSS. A fix (position, optionally velocity, of an antenna at lever arm
+ * l_b: h = p + R l and v + R (w x l), kalman.h) is fused at its own time:
+ *  - stamped within half a sample of the state: applied now;
+ *  - ahead of the state: held in a one-slot buffer until the state reaches it;
+ *  - in the past, within delay_horizon: the filter restarts from a stored
+ *    snapshot older than the fix, replays the stored samples up to the fix
+ *    (with the zero-velocity updates they had), applies it and replays to
+ *    the present (section "Delayed fixes");
+ *  - older than the horizon or than the last fused fix: rejected, counted
+ *    in gnss_stale.
+ * A chi-square gate on the normalised innovation squared (gnss_gate; 0:
+ * none) rejects outliers (gnss_gated, SE23_INS_ST_GNSS_GATED). After
+ * gate_recover consecutive gated fixes (0: never) the filter trusts the
+ * fix over itself: position and velocity are reset to the fix with its
+ * covariance and their correlations dropped (gate_resets,
+ * SE23_INS_ST_GATE_RESET until the next fix passes the gate).
+ *
+ * Delayed fixes. The filter keeps the samples of the last 2 * delay_horizon
+ * in a ring of SE23_INS_RING entries and two snapshots of the state, taken
+ * delay_horizon apart; the older is always at least delay_horizon old, so
+ * any fix within the horizon has a snapshot before it. Fusing a fix stamped
+ * d seconds late costs the replay of up to d + delay_horizon seconds of
+ * samples (prediction and the zero-velocity updates), in that call.
+ * Memory: sizeof(se23_ins_t), about 3 se23_gauss_t (1.9 kB in double, 0.95
+ * kB in float each) plus SE23_INS_RING samples of 72 B (double) / 44 B
+ * (float), plus the detector window (README "The navigation filter"); the
+ * ring must hold 2 * delay_horizon / dt_nominal + 2 samples (checked by
+ * se23_ins_setup). A fix replayed this way equals the same fix applied at
+ * its own time (same operations, same order).
+ *
+ * Zero-velocity updates. With zupt enabled the detector of stationary.h
+ * runs on every accepted sample; while its window is stationary, each
+ * sample applies v = 0 (nav frame, 1-sigma zupt_sigma_v) and, with bias
+ * states, w_meas + b_g = 0 (1-sigma zaru_sigma_w per axis; Earth rate
+ * neglected, so leave it off with a navigation-grade gyro on rotating
+ * Earth). Counted in zupt_used / zaru_used.
+ *
+ * Alignment. se23_ins_align starts a static alignment: the first
+ * stationary window gives roll and pitch (align.h), heading from the caller
+ * or, with gyrocompass set, from the Earth rate the gyro senses; the
+ * attitude covariance from the window's statistics, v = 0, p and the bias
+ * covariances from the caller. Until then samples are counted imu_early.
+ *
+ * Validation (types.h): the configuration is checked by se23_ins_setup, an
+ * initial state or alignment request by se23_ins_init / se23_ins_align (with
+ * se23_gauss_check), every sample and fix where it enters. The filter's own
+ * state is trusted. A library step that fails (it should not, for checked
+ * inputs) is counted in filter_errors and leaves the state as it was.
+ *
+ * Functions index:
+ *   se23_ins_setup        check a configuration, empty filter
+ *   se23_ins_init         initial state (user's coordinates) and time
+ *   se23_ins_align        start a static alignment
+ *   se23_ins_imu          one raw IMU sample
+ *   se23_ins_gnss         one GNSS fix
+ *   se23_ins_state        the user's state, covariance, time and status
+ *   se23_ins_take_factor  the last finished preintegrated factor
+ */
+#ifndef SE23_INS_H
+#define SE23_INS_H
+
+#include <stdint.h>
+
+#include "se23/earth.h"
+#include "se23/gauss.h"
+#include "se23/kalman.h"
+#include "se23/preint_unc.h"
+#include "se23/stationary.h"
+#include "se23/types.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Samples the delayed-fix ring holds (compile-time; see file comment). */
+#ifndef SE23_INS_RING
+#define SE23_INS_RING 128
+#endif
+
+/** Consecutive consistent over-gap samples that confirm an outage. */
+#define SE23_INS_OUTAGE_CONFIRM 3
+
+/** Largest outage a configuration may ask to carry across [s]. */
+#define SE23_INS_MAX_OUTAGE SE23_R(600)
+
+/** Status bits (se23_ins_t.status). */
+#define SE23_INS_ST_INITIALISED 0x001U /**< a state is being propagated */
+#define SE23_INS_ST_GNSS_AIDED 0x002U  /**< at least one GNSS fix applied */
+#define SE23_INS_ST_DEGRADED 0x004U    /**< carried across an outage since the last fix */
+#define SE23_INS_ST_LOST 0x008U        /**< outage too long: waiting for init or alignment */
+#define SE23_INS_ST_GNSS_GATED 0x010U  /**< the last GNSS fix failed the gate */
+#define SE23_INS_ST_EARTH_RATE 0x020U  /**< rotating-Earth model */
+#define SE23_INS_ST_ALIGNING 0x040U    /**< static alignment in progress */
+#define SE23_INS_ST_STATIONARY 0x080U  /**< the detector's window is stationary */
+#define SE23_INS_ST_GATE_RESET 0x100U  /**< position and velocity were reset to a fix */
+
+/** What became of one input (returned by se23_ins_imu and se23_ins_gnss). */
+typedef enum {
+    SE23_INS_USED = 0,         /**< integrated (sample) or fused (fix) */
+    SE23_INS_EARLY = 1,        /**< no state yet */
+    SE23_INS_NONFINITE = 2,    /**< NaN/Inf, negative time or seq, bad sigma */
+    SE23_INS_RANGE = 3,        /**< beyond the sensor range */
+    SE23_INS_DUPLICATE = 4,    /**< same seq as the last sample */
+    SE23_INS_OUT_OF_ORDER = 5, /**< older seq */
+    SE23_INS_BAD_TIME = 6,     /**< not after the last sample */
+    SE23_INS_BAD_DT = 7,       /**< interval above max_gap (maybe an outage) */
+    SE23_INS_OUTAGE = 8,       /**< confirmed an outage: carried across */
+    SE23_INS_PENDING = 9,      /**< fix ahead of the state: held */
+    SE23_INS_STALE = 10,       /**< fix beyond the delay horizon or older than the last */
+    SE23_INS_GATED = 11,       /**< fix failed the chi-square gate */
+    SE23_INS_RESET = 12,       /**< fix reset position and velocity (gate recovery) */
+    SE23_INS_FAILED = 13       /**< a library step failed; state kept */
+} se23_ins_verdict_t;
+
+/** Counters (saturating at UINT32_MAX). Every sample ends in exactly one
+ *  imu_ counter but imu_missing and imu_seq_jumps; every fix in one gnss_
+ *  counter but gnss_delayed and gate_resets (a reset fix is also gated). */
+typedef struct {
+    uint32_t imu_used, imu_early, imu_align, imu_nonfinite, imu_range, imu_duplicate;
+    uint32_t imu_out_of_order, imu_bad_time, imu_bad_dt;
+    uint32_t imu_missing;   /**< samples lost in transit (seq gaps) */
+    uint32_t imu_seq_jumps; /**< seq jumps too large to be losses */
+    uint32_t gnss_used;
+    uint32_t gnss_delayed; /**< of gnss_used: fused late, by replay */
+    uint32_t gnss_pending_dropped, gnss_nonfinite;
+    uint32_t gnss_early, gnss_stale, gnss_gated, gate_resets;
+    uint32_t zupt_used, zaru_used;
+    uint32_t time_resets, filter_errors, init_rejected;
+} se23_ins_counters_t;
+
+/** Configuration (se23_ins_setup checks every field). */
+typedef struct {
+    se23_imu_noise_t noise;     /**< IMU noise densities and bias walks */
+    se23_real_t gyro_range;     /**< sensor range |w| [rad/s] */
+    se23_real_t accel_range;    /**< sensor range |f| [m/s^2] */
+    se23_real_t lat;            /**< latitude of the nav-frame (NED) origin [rad] */
+    int earth_rotation;         /**< 1: rotating Earth, 0: flat */
+    int bias_states;            /**< 1: 15 states, 0: 9 (biases fixed) */
+    se23_real_t dt_nominal;     /**< nominal IMU interval [s] */
+    se23_real_t max_gap;        /**< largest interval one sample bridges [s] */
+    se23_real_t max_outage;     /**< largest outage carried across [s] */
+    se23_real_t outage_accel;   /**< 1-sigma unknown acceleration in an outage [m/s^2] */
+    se23_real_t outage_rate;    /**< 1-sigma unknown angular rate in an outage [rad/s] */
+    se23_vec3_t lever_b;        /**< GNSS antenna in the body frame [m] */
+    se23_real_t gnss_gate;      /**< chi-square gate on the NIS (0: none) */
+    int gate_recover;           /**< consecutive gated fixes before a reset (0: never) */
+    se23_real_t delay_horizon;  /**< oldest fix fused at its own time [s] (0: none) */
+    se23_real_t preint_window;  /**< preintegrated factor length [s] (0: none) */
+    int zupt;                   /**< 1: detector and zero-velocity updates */
+    se23_stationary_config_t detector; /**< window, noise, threshold (stationary.h) */
+    se23_real_t zupt_sigma_v;   /**< 1-sigma of v = 0 at rest [m/s] */
+    se23_real_t zaru_sigma_w;   /**< 1-sigma of w = 0 at rest [rad/s] (bias states) */
+} se23_ins_config_t;
+
+/** A GNSS fix in the nav frame, stamped with the time it refers to. */
+typedef struct {
+    int64_t t_ns;
+    se23_vec3_t p_n, sigma_p;  /**< antenna position and its 1-sigma [m] */
+    se23_vec3_t v_n, sigma_v;  /**< antenna velocity and its 1-sigma [m/s] */
+    int has_vel;               /**< nonzero: v_n, sigma_v are used */
+} se23_ins_gnss_t;
+
+/** Static alignment request (se23_ins_align). */
+typedef struct {
+    se23_vec3_t p_n;          /**< position [m] */
+    se23_real_t sigma_p;      /**< its 1-sigma per axis [m] */
+    se23_real_t yaw;          /**< heading [rad] (unless gyrocompass) */
+    se23_real_t sigma_yaw;    /**< its 1-sigma [rad] */
+    int gyrocompass;          /**< nonzero: heading from the sensed Earth rate */
+    se23_real_t sigma_v;      /**< 1-sigma of the initial v = 0 [m/s] */
+    se23_real_t sigma_bg;     /**< initial gyro bias 1-sigma [rad/s] (bias states) */
+    se23_real_t sigma_ba;     /**< initial accel bias 1-sigma [m/s^2] (bias states) */
+} se23_ins_align_t;
+
+/** A stored state for the replay of delayed fixes. */
+typedef struct {
+    se23_gauss_t g;           /**< state after the sample at t_ns */
+    int64_t t_ns;
+    se23_imu_sample_t last;   /**< that sample (the rate of the lever arm) */
+} se23_ins_snapshot_t;
+
+/** One accepted sample as the ring keeps it. */
+typedef struct {
+    se23_imu_sample_t s;
+    int64_t t_ns;
+    int stationary;           /**< zero-velocity updates were applied after it */
+} se23_ins_hist_t;
+
+/** A finished preintegrated factor. */
+typedef struct {
+    se23_preint_unc_t f;      /**< Deltas, covariance and bias Jacobian */
+    int64_t t0_ns, t1_ns, seq0;
+} se23_ins_factor_t;
+
+/** The filter (caller-owned; fields are read-only for the caller). */
+typedef struct {
+    se23_ins_config_t cfg;
+    se23_earth_model_t model;
+    se23_gauss_t g;               /**< state in the model's coordinates */
+    se23_gauss_t work;            /**< scratch of the updates (user's coordinates) */
+    se23_meas_t meas;             /**< scratch of the updates */
+    int64_t half_ns, max_gap_ns, horizon_ns; /**< from cfg: half a sample, max_gap, delay_horizon */
+    int64_t max_missing;          /**< most samples max_gap can hold */
+    uint32_t status;              /**< SE23_INS_ST_* bits */
+    int64_t t_ns, seq;            /**< time and seq of the last accepted sample */
+    int64_t max_seq;              /**< highest seq received since init */
+    se23_imu_sample_t last;       /**< last accepted sample (raw), for holds */
+    int have_last;
+    /* outage detection */
+    int streak;
+    int64_t streak_t_ns, streak_seq;
+    /* GNSS */
+    se23_ins_gnss_t pending;
+    int have_pending;
+    int64_t last_fix_ns;          /**< time of the last fused fix (-1: none) */
+    int gated_run;                /**< consecutive gated fixes */
+    se23_real_t nis_last;
+    /* delayed fixes */
+    se23_ins_hist_t ring[SE23_INS_RING];
+    int ring_head, ring_count;    /**< oldest entry, number of entries */
+    int replaying;                /**< nonzero inside a replay (counters not repeated) */
+    se23_ins_snapshot_t snap[2];
+    int n_snap;                   /**< snapshots held */
+    int snap_old;                 /**< index of the older one */
+    /* zero-velocity detection and alignment */
+    se23_stationary_t det;
+    se23_ins_align_t align;
+    /* preintegration */
+    se23_ins_factor_t fac, fac_out;
+    int fac_ready;
+    se23_ins_counters_t c;
+} se23_ins_t;
+
+/**
+ * ins = an empty filter (no state) for cfg.
+ * @return SE23_ERR_NULL; SE23_ERR_NONFINITE (a non-finite field);
+ *         SE23_ERR_DOMAIN (a negative noise, range, sigma or gate;
+ *         max_outage above SE23_INS_MAX_OUTAGE; |lat| > pi/2;
+ *         bias_states, earth_rotation or zupt not 0/1); SE23_ERR_DT
+ *         (dt_nominal <= 0, max_gap below dt_nominal or above
+ *         SE23_CFG_DT_MAX); SE23_ERR_DIM (the ring cannot hold
+ *         2 * delay_horizon / dt_nominal + 2 samples); the statuses of
+ *         se23_stationary_init when zupt is set. Nothing is written on error.
+ */
+se23_status_t se23_ins_setup(const se23_ins_config_t *cfg, se23_ins_t *ins);
+
+/**
+ * (Re)initialises the state at time t_ns with the user's state g (R, v, p,
+ * biases, covariance; g->n must be 15 with bias states, else 9), checked
+ * here with se23_gauss_check: the one deep check it gets.
+ * @return SE23_ERR_NULL, SE23_ERR_DIM (n), SE23_ERR_DT (t_ns < 0), the
+ *         statuses of se23_gauss_check; on error the filter is unchanged
+ *         but for init_rejected.
+ */
+se23_status_t se23_ins_init(se23_ins_t *ins, int64_t t_ns, const se23_gauss_t *g);
+
+/**
+ * Starts a static alignment (file comment): the state is set at the end
+ * of the first stationary detector window.
+ * @return SE23_ERR_NULL; SE23_ERR_DOMAIN (detector off in the
+ *         configuration, gyrocompass on flat Earth, a sigma <= 0);
+ *         SE23_ERR_NONFINITE; on error the filter is unchanged but for
+ *         init_rejected.
+ */
+se23_status_t se23_ins_align(se23_ins_t *ins, const se23_ins_align_t *a);
+
+/** One raw IMU sample (gyro w_b [rad/s], specific force f_b [m/s^2]). */
+se23_ins_verdict_t se23_ins_imu(se23_ins_t *ins, int64_t t_ns, int64_t seq,
+                                const se23_vec3_t *w_b, const se23_vec3_t *f_b);
+
+/** One GNSS fix (file comment, "GNSS"). */
+se23_ins_verdict_t se23_ins_gnss(se23_ins_t *ins, const se23_ins_gnss_t *fix);
+
+/**
+ * out = the user's state (R, v, p, biases, covariance); t_ns its time.
+ * @return SE23_ERR_DIM before the first state; otherwise SE23_OK.
+ */
+se23_status_t se23_ins_state(const se23_ins_t *ins, se23_gauss_t *out, int64_t *t_ns);
+
+/** Takes the finished preintegrated factor, if any: returns 1, else 0. */
+int se23_ins_take_factor(se23_ins_t *ins, se23_ins_factor_t *out);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* SE23_INS_H */

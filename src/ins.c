@@ -1,0 +1,385 @@
+/* The navigation filter: configuration, initial state, output and the
+ * screening of samples and fixes where they enter; see ins.h. */
+#include "ins_internal.h"
+
+#include "argcheck.h"
+#include "linalg.h"
+#include "se23/so3.h"
+#include "se23_math.h"
+
+/* Largest 1-sigma a fix may state [m, m/s]: its square stays finite in
+ * float, and nothing physical is that uncertain. */
+#define FIX_SIGMA_MAX SE23_R(1e6)
+
+void se23_ins_count(uint32_t *c)
+{
+    if (*c < UINT32_MAX) {
+        *c += 1U;
+    }
+}
+
+void se23_ins_count_add(uint32_t *c, int64_t k)
+{
+    const uint32_t room = UINT32_MAX - *c;
+    const int64_t room64 = (int64_t)room;
+    *c = (k >= room64) ? UINT32_MAX : (*c + (uint32_t)k);
+}
+
+int64_t se23_ins_half_sample_ns(const se23_ins_t *ins)
+{
+    return ins->half_ns;
+}
+
+/* Nanoseconds of a checked duration s (0 <= s <= 1e9 s). */
+static int64_t to_ns(se23_real_t s)
+{
+    const se23_real_t ns = s * SE23_INS_NS;
+    return (int64_t)ns;
+}
+
+static int is_flag(int x)
+{
+    return (x == 0) || (x == 1);
+}
+
+/* The statuses of se23_ins_setup for cfg, SE23_OK if it is usable. */
+static se23_status_t config_check(const se23_ins_config_t *cfg)
+{
+    const se23_real_t reals[] = {
+        cfg->noise.gyro_noise, cfg->noise.accel_noise, cfg->noise.gyro_walk,
+        cfg->noise.accel_walk, cfg->gyro_range, cfg->accel_range, cfg->lat,
+        cfg->dt_nominal, cfg->max_gap, cfg->max_outage, cfg->outage_accel,
+        cfg->outage_rate, cfg->lever_b.v[0], cfg->lever_b.v[1], cfg->lever_b.v[2],
+        cfg->gnss_gate, cfg->delay_horizon, cfg->preint_window, cfg->zupt_sigma_v,
+        cfg->zaru_sigma_w};
+    const size_t n_bytes = sizeof reals;
+    const int n_reals = (int)n_bytes / (int)sizeof reals[0];
+    int i;
+    if (se23_all_finite(reals, n_reals) == 0) {
+        return SE23_ERR_NONFINITE;
+    }
+    /* every real but lat and the lever arm is a magnitude */
+    for (i = 0; i < n_reals; ++i) {
+        if ((i != 6) && ((i < 12) || (i > 14)) && (reals[i] < SE23_R(0))) {
+            return SE23_ERR_DOMAIN;
+        }
+    }
+    if ((se23_fabs(cfg->lat) > (SE23_R(0.5) * SE23_PI)) || (cfg->gyro_range <= SE23_R(0)) ||
+        (cfg->accel_range <= SE23_R(0)) || (cfg->max_outage > SE23_INS_MAX_OUTAGE) ||
+        (is_flag(cfg->earth_rotation) == 0) || (is_flag(cfg->bias_states) == 0) ||
+        (is_flag(cfg->zupt) == 0) || (cfg->gate_recover < 0)) {
+        return SE23_ERR_DOMAIN;
+    }
+    if ((cfg->zupt != 0) && ((cfg->zupt_sigma_v <= SE23_R(0)) ||
+                             ((cfg->bias_states != 0) && (cfg->zaru_sigma_w <= SE23_R(0))))) {
+        return SE23_ERR_DOMAIN;
+    }
+    if ((cfg->dt_nominal <= SE23_R(0)) || (cfg->max_gap < cfg->dt_nominal) ||
+        (cfg->max_gap > SE23_R(SE23_CFG_DT_MAX))) {
+        return SE23_ERR_DT;
+    }
+    if ((SE23_R(2) * cfg->delay_horizon / cfg->dt_nominal) + SE23_R(2) >
+        (se23_real_t)SE23_INS_RING) {
+        return SE23_ERR_DIM;
+    }
+    return SE23_OK;
+}
+
+se23_status_t se23_ins_setup(const se23_ins_config_t *cfg, se23_ins_t *ins)
+{
+    const se23_vec3_t zero = {{SE23_R(0), SE23_R(0), SE23_R(0)}};
+    se23_vec3_t g_n, w_ie_n;
+    se23_earth_model_t model;
+    se23_status_t st;
+    SE23_CHECK_NOT_NULL(cfg);
+    SE23_CHECK_NOT_NULL(ins);
+    st = config_check(cfg);
+    if (st == SE23_OK) {
+        st = se23_earth_gravity_vec(SE23_FRAME_NED, cfg->lat, SE23_R(0), &g_n);
+    }
+    if (st == SE23_OK) {
+        st = se23_earth_rate(SE23_FRAME_NED, cfg->lat, &w_ie_n);
+    }
+    /* Steps of up to SE23_CFG_DT_MAX: an outage is carried across in few
+     * of them; the screening holds single samples to max_gap. */
+    if (st == SE23_OK) {
+        st = se23_earth_model_init(&g_n, (cfg->earth_rotation != 0) ? &w_ie_n : &zero,
+                                   cfg->dt_nominal, SE23_CFG_DT_MAX, &model);
+    }
+    if ((st == SE23_OK) && (cfg->zupt != 0)) {
+        st = se23_stationary_init(&cfg->detector, &ins->det); /* nothing written on error */
+    }
+    if (st != SE23_OK) {
+        return st;
+    }
+    {
+        const se23_ins_counters_t none = {0};
+        const se23_real_t per_gap = cfg->max_gap / cfg->dt_nominal;
+        ins->cfg = *cfg;
+        ins->model = model;
+        ins->status = 0U;
+        if (cfg->earth_rotation != 0) {
+            ins->status = SE23_INS_ST_EARTH_RATE;
+        }
+        ins->half_ns = to_ns(SE23_R(0.5) * cfg->dt_nominal);
+        ins->max_gap_ns = to_ns(cfg->max_gap);
+        ins->horizon_ns = to_ns(cfg->delay_horizon);
+        ins->max_missing = (int64_t)per_gap + 1;
+        ins->nis_last = SE23_R(0);
+        ins->replaying = 0;
+        ins->fac_ready = 0;
+        ins->c = none;
+    }
+    return SE23_OK;
+}
+
+void se23_ins_start(se23_ins_t *ins, int64_t t_ns, const se23_gauss_t *g)
+{
+    const se23_imu_sample_t none = {{{SE23_R(0)}}, {{SE23_R(0)}}, SE23_R(0)};
+    ins->g = *g;
+    ins->last = none;
+    ins->t_ns = t_ns;
+    ins->seq = 0;
+    ins->max_seq = -1;
+    ins->have_last = 0;
+    ins->streak = 0;
+    ins->have_pending = 0;
+    ins->last_fix_ns = -1;
+    ins->gated_run = 0;
+    ins->status = (ins->status & SE23_INS_ST_EARTH_RATE) |
+                  SE23_INS_ST_INITIALISED;
+    if (ins->cfg.zupt != 0) {
+        se23_stationary_reset(&ins->det);
+    }
+    se23_ins_ring_restart(ins);
+    se23_ins_factor_reset(ins);
+}
+
+se23_status_t se23_ins_init(se23_ins_t *ins, int64_t t_ns, const se23_gauss_t *g)
+{
+    se23_status_t st;
+    int n;
+    SE23_CHECK_NOT_NULL(ins);
+    SE23_CHECK_NOT_NULL(g);
+    n = SE23_GAUSS_N_POSE;
+    if (ins->cfg.bias_states != 0) {
+        n = SE23_GAUSS_N_BIAS;
+    }
+    /* The state enters here: its one deep check. */
+    if (g->n != n) {
+        st = SE23_ERR_DIM;
+    } else if (t_ns < 0) {
+        st = SE23_ERR_DT;
+    } else {
+        st = se23_gauss_check(g);
+    }
+    if (st == SE23_OK) {
+        st = se23_gauss_to_carried(&ins->model, g, &ins->work);
+    }
+    if (st != SE23_OK) {
+        se23_ins_count(&ins->c.init_rejected);
+        return st;
+    }
+    se23_ins_start(ins, t_ns, &ins->work);
+    return SE23_OK;
+}
+
+se23_status_t se23_ins_state(const se23_ins_t *ins, se23_gauss_t *out, int64_t *t_ns)
+{
+    se23_status_t st;
+    SE23_CHECK_NOT_NULL(ins);
+    SE23_CHECK_NOT_NULL(out);
+    SE23_CHECK_NOT_NULL(t_ns);
+    if ((ins->status & SE23_INS_ST_INITIALISED) == 0U) {
+        return SE23_ERR_DIM;
+    }
+    st = se23_gauss_from_carried(&ins->model, &ins->g, out);
+    if (st == SE23_OK) {
+        *t_ns = ins->t_ns;
+    }
+    return st;
+}
+
+int se23_ins_take_factor(se23_ins_t *ins, se23_ins_factor_t *out)
+{
+    if ((ins == NULL) || (out == NULL) || (ins->fac_ready == 0)) {
+        return 0;
+    }
+    *out = ins->fac_out;
+    ins->fac_ready = 0;
+    return 1;
+}
+
+/* Seq bookkeeping of a received sample (seq >= 0): losses in transit, or a
+ * jump too large to be one. */
+static void count_missing(se23_ins_t *ins, int64_t seq)
+{
+    if (ins->max_seq < 0) {
+        ins->max_seq = seq;
+    } else if (seq > ins->max_seq) {
+        const int64_t lost = seq - ins->max_seq - 1; /* both >= 0: no overflow */
+        if (lost <= ins->max_missing) {
+            se23_ins_count_add(&ins->c.imu_missing, lost);
+            ins->max_seq = seq;
+        } else {
+            se23_ins_count(&ins->c.imu_seq_jumps);
+        }
+    } else {
+        /* an old or repeated seq: judged by the time screening */
+    }
+}
+
+/* The screening verdict of a finite, in-range sample that is not after the
+ * last accepted one. */
+static se23_ins_verdict_t not_after(se23_ins_t *ins, int64_t seq)
+{
+    if ((ins->have_last != 0) && (seq == ins->seq)) {
+        se23_ins_count(&ins->c.imu_duplicate);
+        return SE23_INS_DUPLICATE;
+    }
+    if ((ins->have_last != 0) && (seq < ins->seq)) {
+        se23_ins_count(&ins->c.imu_out_of_order);
+        return SE23_INS_OUT_OF_ORDER;
+    }
+    se23_ins_count(&ins->c.imu_bad_time);
+    return SE23_INS_BAD_TIME;
+}
+
+/* A pending fix whose time the state has reached is fused. */
+static void service_pending(se23_ins_t *ins)
+{
+    if ((ins->have_pending != 0) && (ins->pending.t_ns <= ins->t_ns + ins->half_ns)) {
+        ins->have_pending = 0;
+        (void)se23_ins_gnss(ins, &ins->pending);
+    }
+}
+
+/* An accepted live sample: the step, then the bookkeeping. */
+static se23_ins_verdict_t accept(se23_ins_t *ins, int64_t t_ns, int64_t seq,
+                                 const se23_imu_sample_t *s)
+{
+    int stationary = 0;
+    if (ins->cfg.zupt != 0) {
+        if (se23_stationary_add(&ins->det, &s->w_ib_b, &s->f_b, &stationary) != SE23_OK) {
+            stationary = 0; /* cannot happen: the sample was screened */
+        }
+    }
+    if (se23_ins_step(ins, t_ns, s, stationary) == 0) {
+        return SE23_INS_FAILED;
+    }
+    ins->streak = 0;
+    ins->seq = seq;
+    se23_ins_count(&ins->c.imu_used);
+    se23_ins_factor_add(ins, s);
+    se23_ins_ring_push(ins, s, stationary);
+    service_pending(ins);
+    return SE23_INS_USED;
+}
+
+se23_ins_verdict_t se23_ins_imu(se23_ins_t *ins, int64_t t_ns, int64_t seq,
+                                const se23_vec3_t *w_b, const se23_vec3_t *f_b)
+{
+    se23_imu_sample_t s;
+    const uint32_t live = SE23_INS_ST_INITIALISED | SE23_INS_ST_ALIGNING;
+    if ((ins == NULL) || (w_b == NULL) || (f_b == NULL)) {
+        return SE23_INS_FAILED;
+    }
+    if ((ins->status & live) == 0U) {
+        se23_ins_count(&ins->c.imu_early);
+        return SE23_INS_EARLY;
+    }
+    if ((se23_all_finite(w_b->v, 3) == 0) || (se23_all_finite(f_b->v, 3) == 0) || (t_ns < 0) ||
+        (seq < 0)) {
+        se23_ins_count(&ins->c.imu_nonfinite);
+        return SE23_INS_NONFINITE;
+    }
+    s.w_ib_b = *w_b;
+    s.f_b = *f_b;
+    s.dt = SE23_R(0);
+    if ((se23_v3_dot(w_b, w_b) > ins->cfg.gyro_range * ins->cfg.gyro_range) ||
+        (se23_v3_dot(f_b, f_b) > ins->cfg.accel_range * ins->cfg.accel_range)) {
+        se23_ins_count(&ins->c.imu_range);
+        return SE23_INS_RANGE;
+    }
+    if ((ins->status & SE23_INS_ST_ALIGNING) != 0U) {
+        se23_ins_count(&ins->c.imu_align);
+        return se23_ins_align_sample(ins, t_ns, &s);
+    }
+    count_missing(ins, seq);
+    if (t_ns <= ins->t_ns) {
+        return not_after(ins, seq);
+    }
+    if (t_ns - ins->t_ns > ins->max_gap_ns) { /* both >= 0: no overflow */
+        return se23_ins_over_gap(ins, t_ns, seq);
+    }
+    {
+        const int64_t dt_ns = t_ns - ins->t_ns;
+        s.dt = (se23_real_t)dt_ns / SE23_INS_NS;
+    }
+    return accept(ins, t_ns, seq, &s);
+}
+
+/* A usable 1-sigma: positive and at most FIX_SIGMA_MAX. */
+static int sigma_ok(const se23_vec3_t *s)
+{
+    int i;
+    for (i = 0; i < 3; ++i) {
+        if (!((s->v[i] > SE23_R(0)) && (s->v[i] <= FIX_SIGMA_MAX))) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+/* Nonzero if every field fix states is finite and its sigmas usable
+ * (NaN fails the sigma test too). */
+static int fix_valid(const se23_ins_gnss_t *fix)
+{
+    if ((fix->t_ns < 0) || (se23_all_finite(fix->p_n.v, 3) == 0) ||
+        (sigma_ok(&fix->sigma_p) == 0)) {
+        return 0;
+    }
+    if ((fix->has_vel != 0) &&
+        ((se23_all_finite(fix->v_n.v, 3) == 0) || (sigma_ok(&fix->sigma_v) == 0))) {
+        return 0;
+    }
+    return 1;
+}
+
+se23_ins_verdict_t se23_ins_gnss(se23_ins_t *ins, const se23_ins_gnss_t *fix)
+{
+    se23_ins_verdict_t v;
+    if ((ins == NULL) || (fix == NULL)) {
+        return SE23_INS_FAILED;
+    }
+    if (((ins->status & SE23_INS_ST_INITIALISED) == 0U) ||
+        ((ins->status & SE23_INS_ST_LOST) != 0U)) {
+        se23_ins_count(&ins->c.gnss_early);
+        return SE23_INS_EARLY;
+    }
+    if (fix_valid(fix) == 0) {
+        se23_ins_count(&ins->c.gnss_nonfinite);
+        return SE23_INS_NONFINITE;
+    }
+    if (fix->t_ns > ins->t_ns + ins->half_ns) { /* ahead: waits for the state */
+        if (ins->have_pending != 0) {
+            se23_ins_count(&ins->c.gnss_pending_dropped);
+        }
+        ins->pending = *fix;
+        ins->have_pending = 1;
+        return SE23_INS_PENDING;
+    }
+    if ((fix->t_ns <= ins->last_fix_ns) || (fix->t_ns < ins->t_ns - ins->half_ns - ins->horizon_ns)) {
+        se23_ins_count(&ins->c.gnss_stale);
+        return SE23_INS_STALE;
+    }
+    if (fix->t_ns >= ins->t_ns - ins->half_ns) { /* now */
+        v = se23_ins_fuse_gnss(ins, fix);
+        if ((v == SE23_INS_USED) || (v == SE23_INS_RESET)) {
+            se23_ins_ring_restart(ins); /* later fixes are after this one */
+        }
+    } else {
+        v = se23_ins_fuse_delayed(ins, fix);
+    }
+    return v;
+}

@@ -1,0 +1,207 @@
+/* The navigation filter's measurement updates: zero velocity and rate at
+ * rest, GNSS with its gate and gate recovery; see ins.h. Every update runs
+ * on the user's (R, v, p) in ins->work and is committed to the state only
+ * when it succeeded (and passed the gate). */
+#include "ins_internal.h"
+
+#include <stddef.h>
+
+#include "linalg.h"
+
+/* ins->work = the user's state of ins->g. */
+static se23_status_t user_state(se23_ins_t *ins)
+{
+    if (ins->cfg.earth_rotation == 0) {
+        ins->work = ins->g; /* flat Earth: carried and user's coincide */
+        return SE23_OK;
+    }
+    return se23_gauss_from_carried(&ins->model, &ins->g, &ins->work);
+}
+
+/* ins->g = ins->work, back in the model's coordinates. */
+static se23_status_t commit(se23_ins_t *ins)
+{
+    if (ins->cfg.earth_rotation == 0) {
+        ins->g = ins->work;
+        return SE23_OK;
+    }
+    return se23_gauss_to_carried(&ins->model, &ins->work, &ins->g);
+}
+
+/* C = diag(s0^2, s1^2, s2^2) */
+static void diag_cov(se23_real_t s0, se23_real_t s1, se23_real_t s2, se23_mat3_t *C)
+{
+    se23_m3_identity(C);
+    C->m[0][0] = s0 * s0;
+    C->m[1][1] = s1 * s1;
+    C->m[2][2] = s2 * s2;
+}
+
+/* ins->work updated in place with ins->meas; *nis its NIS (if not NULL). */
+static se23_status_t update_work(se23_ins_t *ins, se23_real_t *nis)
+{
+    return se23_kalman_update(&ins->work, &ins->meas, &ins->work, nis);
+}
+
+int se23_ins_zupt(se23_ins_t *ins, const se23_imu_sample_t *s)
+{
+    const se23_vec3_t zero = {{SE23_R(0), SE23_R(0), SE23_R(0)}};
+    const se23_real_t sv = ins->cfg.zupt_sigma_v;
+    const se23_real_t sw = ins->cfg.zaru_sigma_w;
+    se23_mat3_t C;
+    se23_status_t st = user_state(ins);
+    diag_cov(sv, sv, sv, &C);
+    if (st == SE23_OK) {
+        st = se23_meas_vel_nav(&ins->work.T, &zero, &C, &ins->meas);
+    }
+    if (st == SE23_OK) {
+        st = update_work(ins, NULL);
+    }
+    if ((st == SE23_OK) && (ins->cfg.bias_states != 0)) {
+        diag_cov(sw, sw, sw, &C);
+        st = se23_meas_zero_rate(&s->w_ib_b, &ins->work.b_g, &C, &ins->meas);
+        if (st == SE23_OK) {
+            st = update_work(ins, NULL);
+        }
+    }
+    if (st == SE23_OK) {
+        st = commit(ins);
+    }
+    if (ins->replaying != 0) {
+        return (st == SE23_OK) ? 1 : 0; /* counted when it was first applied */
+    }
+    if (st != SE23_OK) {
+        se23_ins_count(&ins->c.filter_errors);
+        return 0;
+    }
+    se23_ins_count(&ins->c.zupt_used);
+    if (ins->cfg.bias_states != 0) {
+        se23_ins_count(&ins->c.zaru_used);
+    }
+    return 1;
+}
+
+/* P's rows and columns of block b (first index) zeroed, and its diagonal
+ * block set to R^T diag(s^2) R: the covariance, in the body-frame error of
+ * gauss.h, of a nav-frame quantity known to 1-sigma s per axis. */
+static void reset_block(se23_gauss_t *g, int b, const se23_vec3_t *s)
+{
+    se23_mat3_t C, RtC, B;
+    int i, j;
+    for (i = 0; i < g->n; ++i) {
+        for (j = b; j < b + 3; ++j) {
+            g->P.m[se23_ins_idx(i, j)] = SE23_R(0);
+            g->P.m[se23_ins_idx(j, i)] = SE23_R(0);
+        }
+    }
+    diag_cov(s->v[0], s->v[1], s->v[2], &C);
+    se23_m3_mul_tn(&g->T.R, &C, &RtC);
+    se23_m3_mul(&RtC, &g->T.R, &B);
+    for (i = 0; i < 3; ++i) {
+        for (j = 0; j < 3; ++j) {
+            g->P.m[se23_ins_idx(b + i, b + j)] = SE23_R(0.5) * (B.m[i][j] + B.m[j][i]);
+        }
+    }
+}
+
+/* The antenna's rate term: w = last sample's gyro + bias estimate. */
+static void body_rate(const se23_ins_t *ins, se23_vec3_t *w)
+{
+    se23_v3_axpy(&ins->last.w_ib_b, SE23_R(1), &ins->work.b_g, w);
+}
+
+/*
+ * Gate recovery: position (and velocity, if the fix has it) taken from the
+ * fix, p = p_fix - R l, v = v_fix - R (w x l), with the fix's covariance
+ * and no correlation with the rest; attitude and biases kept. Dropping
+ * correlations of a PSD matrix block-diagonally keeps it PSD.
+ */
+static se23_ins_verdict_t gate_reset(se23_ins_t *ins, const se23_ins_gnss_t *fix)
+{
+    se23_vec3_t Rl, w, wl, Rwl;
+    if (user_state(ins) != SE23_OK) {
+        se23_ins_count(&ins->c.filter_errors);
+        return SE23_INS_FAILED;
+    }
+    se23_m3_mul_v3(&ins->work.T.R, &ins->cfg.lever_b, &Rl);
+    se23_v3_axpy(&fix->p_n, SE23_R(-1), &Rl, &ins->work.T.p);
+    reset_block(&ins->work, SE23_IDX_RHO, &fix->sigma_p);
+    if (fix->has_vel != 0) {
+        body_rate(ins, &w);
+        se23_v3_cross(&w, &ins->cfg.lever_b, &wl);
+        se23_m3_mul_v3(&ins->work.T.R, &wl, &Rwl);
+        se23_v3_axpy(&fix->v_n, SE23_R(-1), &Rwl, &ins->work.T.v);
+        reset_block(&ins->work, SE23_IDX_NU, &fix->sigma_v);
+    }
+    if (commit(ins) != SE23_OK) {
+        se23_ins_count(&ins->c.filter_errors);
+        return SE23_INS_FAILED;
+    }
+    ins->gated_run = 0;
+    ins->last_fix_ns = fix->t_ns;
+    se23_ins_count(&ins->c.gate_resets);
+    ins->status |= SE23_INS_ST_GATE_RESET;
+    return SE23_INS_RESET;
+}
+
+/* Nonzero if nis fails the configured gate. */
+static int gated(const se23_ins_t *ins, se23_real_t nis)
+{
+    return ((ins->cfg.gnss_gate > SE23_R(0)) && !(nis <= ins->cfg.gnss_gate)) ? 1 : 0;
+}
+
+se23_ins_verdict_t se23_ins_fuse_gnss(se23_ins_t *ins, const se23_ins_gnss_t *fix)
+{
+    const se23_vec3_t *sp = &fix->sigma_p;
+    const se23_vec3_t *sv = &fix->sigma_v;
+    se23_real_t nis_p = SE23_R(0), nis_v = SE23_R(0);
+    se23_mat3_t C;
+    se23_vec3_t w;
+    int out = 0;
+    /* Position, then velocity: sequential updates of independent rows,
+     * each gated on its own NIS (3 degrees of freedom). */
+    se23_status_t st = user_state(ins);
+    diag_cov(sp->v[0], sp->v[1], sp->v[2], &C);
+    if (st == SE23_OK) {
+        st = se23_meas_pos_nav(&ins->work.T, &fix->p_n, &ins->cfg.lever_b, &C, &ins->meas);
+    }
+    if (st == SE23_OK) {
+        st = update_work(ins, &nis_p);
+        out = gated(ins, nis_p);
+    }
+    if ((st == SE23_OK) && (out == 0) && (fix->has_vel != 0)) {
+        body_rate(ins, &w);
+        diag_cov(sv->v[0], sv->v[1], sv->v[2], &C);
+        st = se23_meas_vel_nav_lever(&ins->work.T, &w, &ins->cfg.lever_b, &fix->v_n, &C,
+                                     &ins->meas);
+        if (st == SE23_OK) {
+            st = update_work(ins, &nis_v);
+            out = gated(ins, nis_v);
+        }
+    }
+    if (st != SE23_OK) {
+        se23_ins_count(&ins->c.filter_errors);
+        return SE23_INS_FAILED;
+    }
+    ins->nis_last = nis_p + nis_v;
+    if (out != 0) {
+        se23_ins_count(&ins->c.gnss_gated);
+        ins->status |= SE23_INS_ST_GNSS_GATED;
+        ins->gated_run++;
+        if ((ins->cfg.gate_recover > 0) && (ins->gated_run >= ins->cfg.gate_recover)) {
+            return gate_reset(ins, fix);
+        }
+        return SE23_INS_GATED;
+    }
+    if (commit(ins) != SE23_OK) {
+        se23_ins_count(&ins->c.filter_errors);
+        return SE23_INS_FAILED;
+    }
+    ins->gated_run = 0;
+    ins->last_fix_ns = fix->t_ns;
+    se23_ins_count(&ins->c.gnss_used);
+    ins->status |= SE23_INS_ST_GNSS_AIDED;
+    ins->status &= ~(SE23_INS_ST_DEGRADED | SE23_INS_ST_GNSS_GATED |
+                     SE23_INS_ST_GATE_RESET);
+    return SE23_INS_USED;
+}

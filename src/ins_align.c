@@ -1,0 +1,170 @@
+/* The navigation filter's static alignment; see ins.h, "Alignment", and
+ * align.h. */
+#include "ins_internal.h"
+
+#include "argcheck.h"
+#include "linalg.h"
+#include "se23/align.h"
+#include "se23_math.h"
+
+/* The statuses of se23_ins_align for a, SE23_OK if it is usable. */
+static se23_status_t align_check(const se23_ins_t *ins, const se23_ins_align_t *a)
+{
+    const se23_real_t reals[] = {a->p_n.v[0], a->p_n.v[1], a->p_n.v[2], a->sigma_p,
+                                 a->yaw, a->sigma_yaw, a->sigma_v, a->sigma_bg, a->sigma_ba};
+    const int bias = ins->cfg.bias_states;
+    se23_status_t st = SE23_OK;
+    const size_t n_bytes = sizeof reals;
+    if (se23_all_finite(reals, (int)n_bytes / (int)sizeof reals[0]) == 0) {
+        st = SE23_ERR_NONFINITE;
+    } else if ((ins->cfg.zupt == 0) || ((a->gyrocompass != 0) && (ins->cfg.earth_rotation == 0)) ||
+               (a->sigma_p <= SE23_R(0)) || (a->sigma_v <= SE23_R(0)) ||
+               ((a->gyrocompass == 0) && (a->sigma_yaw <= SE23_R(0))) ||
+               ((bias != 0) && ((a->sigma_bg <= SE23_R(0)) || (a->sigma_ba <= SE23_R(0)))) ||
+               (a->sigma_ba < SE23_R(0))) {
+        st = SE23_ERR_DOMAIN;
+    } else {
+        /* usable */
+    }
+    return st;
+}
+
+se23_status_t se23_ins_align(se23_ins_t *ins, const se23_ins_align_t *a)
+{
+    se23_status_t st;
+    SE23_CHECK_NOT_NULL(ins);
+    SE23_CHECK_NOT_NULL(a);
+    st = align_check(ins, a);
+    if (st != SE23_OK) {
+        se23_ins_count(&ins->c.init_rejected);
+        return st;
+    }
+    ins->align = *a;
+    ins->status = (ins->status & SE23_INS_ST_EARTH_RATE) | SE23_INS_ST_ALIGNING;
+    se23_stationary_reset(&ins->det);
+    return SE23_OK;
+}
+
+/* Per-axis std of one sample from the window's variances, floored at the
+ * sensor's white noise over one nominal sample, density / sqrt(dt) (a
+ * short quiet window says little about the noise), and at a tiny positive
+ * value for a noise-free sensor. */
+static se23_real_t window_std(const se23_ins_t *ins, const se23_vec3_t *var,
+                              se23_real_t density)
+{
+    const se23_real_t floor_std = density / se23_sqrt(ins->cfg.dt_nominal);
+    const se23_real_t s = se23_sqrt((var->v[0] + var->v[1] + var->v[2]) / SE23_R(3));
+    const se23_real_t tiny = SE23_R(1e-9);
+    const se23_real_t m = (s > floor_std) ? s : floor_std;
+    return (m > tiny) ? m : tiny;
+}
+
+/* P's block (b, c) = A (and (c, b) = A^T). */
+static void put_block(se23_gauss_t *g, int b, int c, const se23_mat3_t *A)
+{
+    int i, j;
+    for (i = 0; i < 3; ++i) {
+        for (j = 0; j < 3; ++j) {
+            g->P.m[se23_ins_idx(b + i, c + j)] = A->m[i][j];
+            g->P.m[se23_ins_idx(c + j, b + i)] = A->m[i][j];
+        }
+    }
+}
+
+/*
+ * The aligned state in the user's coordinates, in ins->work. The tilt error
+ * comes from the accelerometer noise averaged over the window and from the
+ * accelerometer bias, which levelling cannot tell from a tilt: with
+ * f_mean = f - b_a - noise (gauss.h sign convention), u = f_mean/|f_mean|,
+ *   phi_tilt = -(1/g) u^ (b_a + noise)       (body-frame error, R = Rbar exp(phi^)),
+ * so Cov(phi) = (sb^2 + sf^2/N)/g^2 (I - u u^T) + syaw^2 u u^T (align.h
+ * with the noise std sqrt(sf^2 + N sb^2)) and, with bias states,
+ * Cov(phi, db_a) = -(sb^2/g) u^. The gyro bias' effect on a gyrocompass
+ * heading is not modelled (its variance is in sigma_bg only).
+ */
+static se23_status_t aligned_state(se23_ins_t *ins, const se23_vec3_t *f_mean,
+                                   const se23_mat3_t *R, se23_real_t sigma_f,
+                                   se23_real_t sigma_yaw)
+{
+    const se23_ins_align_t *a = &ins->align;
+    const int W = ins->det.cfg.window;
+    const se23_real_t g0 = ins->det.cfg.gravity;
+    const se23_real_t sb = a->sigma_ba;
+    const se23_real_t sf_eff = se23_sqrt((sigma_f * sigma_f) + ((se23_real_t)W * sb * sb));
+    se23_gauss_t *g = &ins->work;
+    se23_mat3_t P, C;
+    se23_vec3_t u;
+    int i;
+    const se23_status_t st = se23_align_cov(R, sf_eff, W, g0, sigma_yaw, &P);
+    if (st != SE23_OK) {
+        return st;
+    }
+    g->n = SE23_GAUSS_N_POSE;
+    if (ins->cfg.bias_states != 0) {
+        g->n = SE23_GAUSS_N_BIAS;
+    }
+    for (i = 0; i < (SE23_GAUSS_NMAX * SE23_GAUSS_NMAX); ++i) {
+        g->P.m[i] = SE23_R(0);
+    }
+    g->T.R = *R;
+    for (i = 0; i < 3; ++i) {
+        g->T.v.v[i] = SE23_R(0);
+        g->T.p.v[i] = a->p_n.v[i];
+        g->b_g.v[i] = SE23_R(0);
+        g->b_a.v[i] = SE23_R(0);
+        g->P.m[se23_ins_idx(SE23_IDX_NU + i, SE23_IDX_NU + i)] = a->sigma_v * a->sigma_v;
+        g->P.m[se23_ins_idx(SE23_IDX_RHO + i, SE23_IDX_RHO + i)] = a->sigma_p * a->sigma_p;
+    }
+    put_block(g, SE23_IDX_PHI, SE23_IDX_PHI, &P);
+    if (g->n == SE23_GAUSS_N_BIAS) {
+        se23_v3_scale(f_mean, SE23_R(1) / se23_sqrt(se23_v3_dot(f_mean, f_mean)), &u);
+        se23_m3_skew(&u, &C);
+        se23_m3_scale(&C, -(sb * sb) / g0, &C);
+        put_block(g, SE23_IDX_PHI, SE23_IDX_BA, &C);
+        for (i = 0; i < 3; ++i) {
+            g->P.m[se23_ins_idx(SE23_IDX_BG + i, SE23_IDX_BG + i)] = a->sigma_bg * a->sigma_bg;
+            g->P.m[se23_ins_idx(SE23_IDX_BA + i, SE23_IDX_BA + i)] = sb * sb;
+        }
+    }
+    return SE23_OK;
+}
+
+se23_ins_verdict_t se23_ins_align_sample(se23_ins_t *ins, int64_t t_ns,
+                                         const se23_imu_sample_t *s)
+{
+    const int W = ins->det.cfg.window;
+    se23_vec3_t w_mean, f_mean, w_var, f_var;
+    se23_real_t yaw, sigma_yaw = ins->align.sigma_yaw;
+    se23_mat3_t R;
+    int stationary = 0;
+    se23_status_t st = se23_stationary_add(&ins->det, &s->w_ib_b, &s->f_b, &stationary);
+    if ((st != SE23_OK) || (stationary == 0)) {
+        return SE23_INS_EARLY;
+    }
+    st = se23_stationary_mean(&ins->det, &w_mean, &f_mean);
+    if (st == SE23_OK) {
+        st = se23_stationary_var(&ins->det, &w_var, &f_var);
+    }
+    if ((st == SE23_OK) && (ins->align.gyrocompass != 0)) {
+        st = se23_align_gyrocompass(SE23_FRAME_NED, ins->cfg.lat, &f_mean, &w_mean,
+                                    window_std(ins, &w_var, ins->cfg.noise.gyro_noise), W, &R,
+                                    &yaw, &sigma_yaw);
+    } else if (st == SE23_OK) {
+        st = se23_align_level(SE23_FRAME_NED, &f_mean, ins->align.yaw, &R);
+    } else {
+        /* the window's statistics failed: wait for the next one */
+    }
+    if (st == SE23_OK) {
+        st = aligned_state(ins, &f_mean, &R,
+                           window_std(ins, &f_var, ins->cfg.noise.accel_noise), sigma_yaw);
+    }
+    if (st == SE23_OK) {
+        st = se23_gauss_to_carried(&ins->model, &ins->work, &ins->work);
+    }
+    if (st != SE23_OK) {
+        return SE23_INS_EARLY; /* not usable (e.g. |f| far from g): keep aligning */
+    }
+    se23_ins_start(ins, t_ns, &ins->work);
+    ins->last = *s;
+    return SE23_INS_USED;
+}

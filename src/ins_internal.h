@@ -1,0 +1,103 @@
+/**
+ * @file ins_internal.h
+ * @brief Internal: the parts of the navigation filter (ins.h) shared
+ *        between its sources:
+ *          ins.c         setup, init, state output, sample screening
+ *          ins_outage.c  over-gap samples, outage carry-across
+ *          ins_step.c    one accepted sample: prediction, detector,
+ *                        zero-velocity updates, preintegrated factor
+ *          ins_aid.c     measurement updates in the user's coordinates,
+ *                        GNSS gate and gate recovery
+ *          ins_delay.c   sample ring, snapshots, delayed fixes
+ *          ins_align.c   static alignment
+ */
+#ifndef SE23_INS_INTERNAL_H
+#define SE23_INS_INTERNAL_H
+
+#include "se23/ins.h"
+#include "se23/kalman.h"
+
+/** Nanoseconds per second, in the build's precision. */
+#define SE23_INS_NS SE23_R(1e9)
+
+/** Index of P's (row, col) in a se23_mat15_t. */
+static inline int se23_ins_idx(int row, int col)
+{
+    return (SE23_GAUSS_NMAX * row) + col;
+}
+
+/** c += 1, saturating. */
+void se23_ins_count(uint32_t *c);
+
+/** c += k (k >= 0), saturating. */
+void se23_ins_count_add(uint32_t *c, int64_t k);
+
+/** Half the nominal sample interval [ns]: the tolerance of "now". */
+int64_t se23_ins_half_sample_ns(const se23_ins_t *ins);
+
+/**
+ * Starts propagating from the model-coordinate state g at time t_ns, seq 0:
+ * clears the outage, GNSS, ring and factor bookkeeping.
+ */
+void se23_ins_start(se23_ins_t *ins, int64_t t_ns, const se23_gauss_t *g);
+
+/**
+ * One prediction of the state through raw sample s; the state is kept on
+ * failure (counted in filter_errors). Returns 1 on success.
+ */
+int se23_ins_predict(se23_ins_t *ins, const se23_imu_sample_t *s);
+
+/**
+ * The whole step of an accepted sample at time t_ns: prediction, then the
+ * zero-velocity updates if stationary. Used live and by the replay.
+ * Returns 1 on success (the state then is at t_ns).
+ */
+int se23_ins_step(se23_ins_t *ins, int64_t t_ns, const se23_imu_sample_t *s, int stationary);
+
+/** Adds an accepted live sample to the preintegrated factor. */
+void se23_ins_factor_add(se23_ins_t *ins, const se23_imu_sample_t *s);
+
+/** Restarts the preintegrated factor at the current state. */
+void se23_ins_factor_reset(se23_ins_t *ins);
+
+/**
+ * The zero-velocity (and, with bias states, zero-rate) update after raw
+ * sample s. Returns 1 on success.
+ */
+int se23_ins_zupt(se23_ins_t *ins, const se23_imu_sample_t *s);
+
+/**
+ * Fuses fix now, at the current state (gate, gate recovery, counters,
+ * status). Returns SE23_INS_USED, SE23_INS_GATED, SE23_INS_RESET or
+ * SE23_INS_FAILED.
+ */
+se23_ins_verdict_t se23_ins_fuse_gnss(se23_ins_t *ins, const se23_ins_gnss_t *fix);
+
+/** Empties the ring and takes the only snapshot at the current state. */
+void se23_ins_ring_restart(se23_ins_t *ins);
+
+/**
+ * Records an accepted sample (after its step) and keeps the snapshots
+ * delay_horizon apart. No-op without a delay horizon.
+ */
+void se23_ins_ring_push(se23_ins_t *ins, const se23_imu_sample_t *s, int stationary);
+
+/**
+ * Fuses a fix stamped in the past (within the horizon, after the last
+ * fused fix) by replay from a snapshot; SE23_INS_STALE if it cannot be
+ * placed.
+ */
+se23_ins_verdict_t se23_ins_fuse_delayed(se23_ins_t *ins, const se23_ins_gnss_t *fix);
+
+/** An over-gap sample: counted, and maybe the confirmation of an outage. */
+se23_ins_verdict_t se23_ins_over_gap(se23_ins_t *ins, int64_t t_ns, int64_t seq);
+
+/**
+ * An alignment sample (the filter is aligning): fed to the detector; the
+ * first stationary window sets the state. Returns SE23_INS_USED when the
+ * state was set, SE23_INS_EARLY otherwise.
+ */
+se23_ins_verdict_t se23_ins_align_sample(se23_ins_t *ins, int64_t t_ns,
+                                         const se23_imu_sample_t *s);
+
+#endif /* SE23_INS_INTERNAL_H */

@@ -1,0 +1,63 @@
+/* The navigation filter's step of one accepted sample and its
+ * preintegrated factor; see ins.h. */
+#include "ins_internal.h"
+
+int se23_ins_predict(se23_ins_t *ins, const se23_imu_sample_t *s)
+{
+    /* In place (gauss.h: outputs may alias inputs; nothing written on error). */
+    if (se23_gauss_predict(&ins->model, &ins->g, s, &ins->cfg.noise, SE23_INPUT_JAC_EXACT,
+                           &ins->g) != SE23_OK) {
+        if (ins->replaying == 0) {
+            se23_ins_count(&ins->c.filter_errors);
+        }
+        return 0;
+    }
+    return 1;
+}
+
+int se23_ins_step(se23_ins_t *ins, int64_t t_ns, const se23_imu_sample_t *s, int stationary)
+{
+    if (se23_ins_predict(ins, s) == 0) {
+        return 0;
+    }
+    ins->t_ns = t_ns;
+    ins->last = *s;
+    ins->have_last = 1;
+    if (stationary != 0) {
+        ins->status |= SE23_INS_ST_STATIONARY;
+        (void)se23_ins_zupt(ins, s); /* a failure is counted; the prediction stands */
+    } else {
+        ins->status &= ~SE23_INS_ST_STATIONARY;
+    }
+    return 1;
+}
+
+void se23_ins_factor_reset(se23_ins_t *ins)
+{
+    if (ins->cfg.preint_window <= SE23_R(0)) {
+        return;
+    }
+    /* The biases of a state the library produced are finite: cannot fail. */
+    (void)se23_preint_unc_reset(&ins->g.b_g, &ins->g.b_a, SE23_INPUT_JAC_EXACT, &ins->fac.f);
+    ins->fac.t0_ns = ins->t_ns;
+    ins->fac.t1_ns = ins->t_ns;
+    ins->fac.seq0 = ins->seq + 1;
+}
+
+void se23_ins_factor_add(se23_ins_t *ins, const se23_imu_sample_t *s)
+{
+    if (ins->cfg.preint_window <= SE23_R(0)) {
+        return;
+    }
+    if (se23_preint_unc_add(&ins->fac.f, s, &ins->cfg.noise) != SE23_OK) {
+        se23_ins_count(&ins->c.filter_errors);
+        se23_ins_factor_reset(ins);
+        return;
+    }
+    if (ins->fac.f.f.dt >= ins->cfg.preint_window - (SE23_R(0.5) * ins->cfg.dt_nominal)) {
+        ins->fac.t1_ns = ins->t_ns;
+        ins->fac_out = ins->fac;
+        ins->fac_ready = 1;
+        se23_ins_factor_reset(ins);
+    }
+}

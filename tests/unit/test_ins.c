@@ -1,0 +1,239 @@
+/* Unit tests of src/ins.c: the configuration and initial-state checks
+ * (every status, nothing written on error), the screening of IMU samples
+ * and GNSS fixes with one counter per reason, seq bookkeeping that stays
+ * defined for corrupted seq values, and the state output. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "ins_test.h"
+#include "se23/ins.h"
+#include "se23_test.h"
+
+static se23_ins_t ins, copy; /* large: static */
+
+static void setup_init(int bias)
+{
+    se23_ins_config_t c;
+    se23_gauss_t g;
+    it_config(&c, bias);
+    assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
+    it_initial(bias ? 15 : 9, 1e-3, 0.1, 1.0, &g);
+    assert_int_equal(se23_ins_init(&ins, 0, &g), SE23_OK);
+}
+
+/* ------------------------------------------------------------ setup */
+
+typedef void (*mutate_fn)(se23_ins_config_t *c);
+static void m_nan_noise(se23_ins_config_t *c) { c->noise.gyro_noise = (se23_real_t)NAN; }
+static void m_neg_noise(se23_ins_config_t *c) { c->noise.accel_walk = SE23_R(-1); }
+static void m_zero_range(se23_ins_config_t *c) { c->gyro_range = SE23_R(0); }
+static void m_lat(se23_ins_config_t *c) { c->lat = SE23_R(2); }
+static void m_flag(se23_ins_config_t *c) { c->bias_states = 2; }
+static void m_dt(se23_ins_config_t *c) { c->dt_nominal = SE23_R(0); }
+static void m_gap(se23_ins_config_t *c) { c->max_gap = SE23_R(2); }
+static void m_gap_small(se23_ins_config_t *c) { c->max_gap = (se23_real_t)1e-3; }
+static void m_outage(se23_ins_config_t *c) { c->max_outage = SE23_R(1e4); }
+static void m_ring(se23_ins_config_t *c) { c->delay_horizon = SE23_R(5); }
+static void m_recover(se23_ins_config_t *c) { c->gate_recover = -1; }
+static void m_zupt_sigma(se23_ins_config_t *c) { c->zupt_sigma_v = SE23_R(0); }
+static void m_detector(se23_ins_config_t *c) { c->detector.window = 1; }
+static void m_inf_lever(se23_ins_config_t *c) { c->lever_b.v[1] = (se23_real_t)INFINITY; }
+
+static void test_setup_rejects_each_bad_field_and_writes_nothing(void **state)
+{
+    (void)state;
+    const struct {
+        mutate_fn m;
+        se23_status_t st;
+    } cases[] = {
+        {m_nan_noise, SE23_ERR_NONFINITE}, {m_neg_noise, SE23_ERR_DOMAIN},
+        {m_zero_range, SE23_ERR_DOMAIN},   {m_lat, SE23_ERR_DOMAIN},
+        {m_flag, SE23_ERR_DOMAIN},         {m_dt, SE23_ERR_DT},
+        {m_gap, SE23_ERR_DT},              {m_gap_small, SE23_ERR_DT},
+        {m_outage, SE23_ERR_DOMAIN},       {m_ring, SE23_ERR_DIM},
+        {m_recover, SE23_ERR_DOMAIN},      {m_zupt_sigma, SE23_ERR_DOMAIN},
+        {m_detector, SE23_ERR_DIM},        {m_inf_lever, SE23_ERR_NONFINITE},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
+        se23_ins_config_t c;
+        it_config(&c, 1);
+        cases[k].m(&c);
+        memset(&ins, 0x5a, sizeof ins);
+        memcpy(&copy, &ins, sizeof ins);
+        assert_int_equal(se23_ins_setup(&c, &ins), cases[k].st);
+        assert_memory_equal(&ins, &copy, sizeof ins);
+    }
+    {
+        se23_ins_config_t c;
+        it_config(&c, 1);
+        assert_int_equal(se23_ins_setup(NULL, &ins), SE23_ERR_NULL);
+        assert_int_equal(se23_ins_setup(&c, NULL), SE23_ERR_NULL);
+        /* The ring's limit, both sides: 2 H / dt + 2 <= SE23_INS_RING. */
+        c.delay_horizon = (se23_real_t)((SE23_INS_RING - 2) / (2.0 * IT_RATE));
+        assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
+        c.delay_horizon = (se23_real_t)((SE23_INS_RING - 1) / (2.0 * IT_RATE));
+        assert_int_equal(se23_ins_setup(&c, &ins), SE23_ERR_DIM);
+    }
+}
+
+static void test_init_checks_the_state_once_and_counts_rejections(void **state)
+{
+    (void)state;
+    se23_ins_config_t c;
+    se23_gauss_t g, out;
+    int64_t t;
+    it_config(&c, 1);
+    assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
+    assert_int_equal(se23_ins_state(&ins, &out, &t), SE23_ERR_DIM); /* no state yet */
+    it_initial(9, 1e-3, 0.1, 1.0, &g);
+    assert_int_equal(se23_ins_init(&ins, 0, &g), SE23_ERR_DIM); /* 15 states configured */
+    it_initial(15, 1e-3, 0.1, 1.0, &g);
+    assert_int_equal(se23_ins_init(&ins, -1, &g), SE23_ERR_DT);
+    g.P.m[1] = SE23_R(1); /* not symmetric */
+    assert_int_equal(se23_ins_init(&ins, 0, &g), SE23_ERR_NOT_SYMMETRIC);
+    it_initial(15, 1e-3, 0.1, 1.0, &g);
+    g.P.m[0] = SE23_R(-1);
+    assert_int_equal(se23_ins_init(&ins, 0, &g), SE23_ERR_NOT_PSD);
+    it_initial(15, 1e-3, 0.1, 1.0, &g);
+    g.T.R.m[0][1] = SE23_R(0.1);
+    assert_int_equal(se23_ins_init(&ins, 0, &g), SE23_ERR_NOT_ROTATION);
+    assert_int_equal(ins.c.init_rejected, 5);
+    assert_int_equal(ins.status & SE23_INS_ST_INITIALISED, 0);
+    it_initial(15, 1e-3, 0.1, 1.0, &g);
+    g.T.p.v[0] = SE23_R(3);
+    assert_int_equal(se23_ins_init(&ins, 7, &g), SE23_OK);
+    assert_int_equal(se23_ins_state(&ins, &out, &t), SE23_OK);
+    assert_int_equal(t, 7);
+    assert_int_equal(out.n, 15);
+    assert_true(out.T.p.v[0] == SE23_R(3));
+}
+
+/* ------------------------------------------------------------ screening */
+
+static void test_every_sample_ends_in_one_counter(void **state)
+{
+    (void)state;
+    se23_ins_config_t c;
+    se23_gauss_t g;
+    se23_vec3_t w, f, bad;
+    it_config(&c, 1);
+    assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
+    it_rest_sample(NULL, NULL, NULL, NULL, &w, &f);
+    assert_int_equal(se23_ins_imu(&ins, IT_DT_NS, 1, &w, &f), SE23_INS_EARLY);
+    it_initial(15, 1e-3, 0.1, 1.0, &g);
+    assert_int_equal(se23_ins_init(&ins, 0, &g), SE23_OK);
+    assert_int_equal(se23_ins_imu(&ins, 1 * IT_DT_NS, 1, &w, &f), SE23_INS_USED);
+    assert_int_equal(se23_ins_imu(&ins, 2 * IT_DT_NS, 2, &w, &f), SE23_INS_USED);
+    bad = w;
+    bad.v[1] = (se23_real_t)NAN;
+    assert_int_equal(se23_ins_imu(&ins, 3 * IT_DT_NS, 3, &bad, &f), SE23_INS_NONFINITE);
+    assert_int_equal(se23_ins_imu(&ins, -1, 3, &w, &f), SE23_INS_NONFINITE);
+    assert_int_equal(se23_ins_imu(&ins, 3 * IT_DT_NS, -3, &w, &f), SE23_INS_NONFINITE);
+    bad = w;
+    bad.v[0] = SE23_R(31); /* beyond the 30 rad/s range */
+    assert_int_equal(se23_ins_imu(&ins, 3 * IT_DT_NS, 3, &bad, &f), SE23_INS_RANGE);
+    assert_int_equal(se23_ins_imu(&ins, 2 * IT_DT_NS, 2, &w, &f), SE23_INS_DUPLICATE);
+    assert_int_equal(se23_ins_imu(&ins, 1 * IT_DT_NS, 1, &w, &f), SE23_INS_OUT_OF_ORDER);
+    assert_int_equal(se23_ins_imu(&ins, 2 * IT_DT_NS, 9, &w, &f), SE23_INS_BAD_TIME);
+    /* seq 3 and 4 lost: the next sample arrives with seq 5 */
+    assert_int_equal(se23_ins_imu(&ins, 5 * IT_DT_NS, 5, &w, &f), SE23_INS_USED);
+    /* one interval above max_gap (0.125 s): rejected, not (yet) an outage */
+    assert_int_equal(se23_ins_imu(&ins, 5 * IT_DT_NS + 200000000LL, 6, &w, &f),
+                     SE23_INS_BAD_DT);
+    /* a corrupted seq: counted as a jump, arithmetic stays defined */
+    assert_int_equal(se23_ins_imu(&ins, 6 * IT_DT_NS, INT64_MAX, &w, &f), SE23_INS_USED);
+    assert_int_equal(se23_ins_imu(&ins, 7 * IT_DT_NS, 7, &w, &f), SE23_INS_USED);
+    assert_int_equal(ins.c.imu_early, 1);
+    assert_int_equal(ins.c.imu_used, 5);
+    assert_int_equal(ins.c.imu_nonfinite, 3);
+    assert_int_equal(ins.c.imu_range, 1);
+    assert_int_equal(ins.c.imu_duplicate, 1);
+    assert_int_equal(ins.c.imu_out_of_order, 1);
+    assert_int_equal(ins.c.imu_bad_time, 1);
+    assert_int_equal(ins.c.imu_bad_dt, 1);
+    assert_int_equal(ins.c.imu_missing, 6); /* the bad-time seq 9 skipped 3..8 */
+    assert_int_equal(ins.c.imu_seq_jumps, 1);
+    assert_int_equal(ins.c.filter_errors, 0);
+    assert_int_equal(se23_ins_imu(NULL, 0, 0, &w, &f), SE23_INS_FAILED);
+    assert_int_equal(se23_ins_imu(&ins, 0, 0, NULL, &f), SE23_INS_FAILED);
+}
+
+static void test_counters_saturate(void **state)
+{
+    (void)state;
+    setup_init(0);
+    ins.c.imu_bad_time = UINT32_MAX - 1U;
+    for (int k = 0; k < 3; ++k) {
+        se23_vec3_t w, f;
+        it_rest_sample(NULL, NULL, NULL, NULL, &w, &f);
+        assert_int_equal(se23_ins_imu(&ins, 0, 1, &w, &f), SE23_INS_BAD_TIME);
+    }
+    assert_true(ins.c.imu_bad_time == UINT32_MAX);
+}
+
+static void test_every_fix_ends_in_one_counter(void **state)
+{
+    (void)state;
+    const double p0[3] = {0.0, 0.0, 0.0};
+    se23_ins_config_t c;
+    se23_ins_gnss_t fix;
+    se23_gauss_t g;
+    it_config(&c, 1);
+    assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
+    it_fix(0, p0, 1.0, &fix);
+    assert_int_equal(se23_ins_gnss(&ins, &fix), SE23_INS_EARLY);
+    it_initial(15, 1e-3, 0.1, 1.0, &g);
+    assert_int_equal(se23_ins_init(&ins, 0, &g), SE23_OK);
+    assert_int_equal(it_run_rest(&ins, NULL, NULL, 0, 0, 100), 100); /* t = 0.5 s */
+    it_fix(100 * IT_DT_NS, p0, 1.0, &fix);
+    fix.p_n.v[2] = (se23_real_t)NAN;
+    assert_int_equal(se23_ins_gnss(&ins, &fix), SE23_INS_NONFINITE);
+    it_fix(100 * IT_DT_NS, p0, 0.0, &fix);
+    assert_int_equal(se23_ins_gnss(&ins, &fix), SE23_INS_NONFINITE);
+    it_fix(100 * IT_DT_NS, p0, 2e6, &fix);
+    assert_int_equal(se23_ins_gnss(&ins, &fix), SE23_INS_NONFINITE);
+    it_fix(100 * IT_DT_NS, p0, 1.0, &fix);
+    fix.has_vel = 1; /* sigma_v left 0 */
+    assert_int_equal(se23_ins_gnss(&ins, &fix), SE23_INS_NONFINITE);
+    it_fix(-5, p0, 1.0, &fix);
+    assert_int_equal(se23_ins_gnss(&ins, &fix), SE23_INS_NONFINITE);
+    /* beyond the 0.25 s horizon */
+    it_fix(30 * IT_DT_NS, p0, 1.0, &fix);
+    assert_int_equal(se23_ins_gnss(&ins, &fix), SE23_INS_STALE);
+    /* now */
+    it_fix(100 * IT_DT_NS, p0, 1.0, &fix);
+    assert_int_equal(se23_ins_gnss(&ins, &fix), SE23_INS_USED);
+    /* not after the last fused fix */
+    it_fix(99 * IT_DT_NS, p0, 1.0, &fix);
+    assert_int_equal(se23_ins_gnss(&ins, &fix), SE23_INS_STALE);
+    /* ahead: held, superseded by a newer one, which is fused when due */
+    it_fix(103 * IT_DT_NS, p0, 1.0, &fix);
+    assert_int_equal(se23_ins_gnss(&ins, &fix), SE23_INS_PENDING);
+    it_fix(104 * IT_DT_NS, p0, 1.0, &fix);
+    assert_int_equal(se23_ins_gnss(&ins, &fix), SE23_INS_PENDING);
+    assert_int_equal(it_run_rest(&ins, NULL, NULL, 100 * IT_DT_NS, 100, 4), 4);
+    assert_int_equal(ins.have_pending, 0);
+    assert_int_equal(ins.c.gnss_early, 1);
+    assert_int_equal(ins.c.gnss_nonfinite, 5);
+    assert_int_equal(ins.c.gnss_stale, 2);
+    assert_int_equal(ins.c.gnss_used, 2);
+    assert_int_equal(ins.c.gnss_pending_dropped, 1);
+    assert_true((ins.status & SE23_INS_ST_GNSS_AIDED) != 0);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_setup_rejects_each_bad_field_and_writes_nothing),
+        cmocka_unit_test(test_init_checks_the_state_once_and_counts_rejections),
+        cmocka_unit_test(test_every_sample_ends_in_one_counter),
+        cmocka_unit_test(test_counters_saturate),
+        cmocka_unit_test(test_every_fix_ends_in_one_counter),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

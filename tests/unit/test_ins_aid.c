@@ -1,0 +1,176 @@
+/* Unit tests of src/ins_aid.c: zero-velocity updates hold a body at rest
+ * at zero velocity within their noise and make the vertical accelerometer
+ * bias and the gyro bias observable; the GNSS lever arm (position and
+ * velocity) places the body, not the antenna, at the fix; gate recovery
+ * after a configured run of gated fixes, and never without it. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "ins_test.h"
+#include "se23/ins.h"
+#include "se23_test.h"
+
+static se23_ins_t ins; /* large: static */
+
+static void start(se23_ins_config_t *c, int n)
+{
+    se23_gauss_t g;
+    assert_int_equal(se23_ins_setup(c, &ins), SE23_OK);
+    it_initial(n, 1e-2, 0.1, 1.0, &g);
+    assert_int_equal(se23_ins_init(&ins, 0, &g), SE23_OK);
+}
+
+static double P_at(const se23_gauss_t *g, int i)
+{
+    return (double)g->P.m[SE23_GAUSS_NMAX * i + i];
+}
+
+static void test_zupt_holds_rest_and_estimates_biases(void **state)
+{
+    (void)state;
+    /* biases the detector tolerates at its threshold (|b| ~ sigma) */
+    const double b_g[3] = {5e-4, -3e-4, 4e-4};
+    const double b_a[3] = {0.0, 0.0, 0.008};
+    se23_ins_config_t c;
+    se23_gauss_t out;
+    se23t_rng_t rng;
+    int64_t t;
+    it_config(&c, 1);
+    start(&c, 15);
+    se23t_rng_seed(&rng, 7);
+    for (int k = 1; k <= 60 * 200; ++k) { /* 60 s at rest */
+        se23_vec3_t w, f;
+        it_rest_sample(&rng, NULL, b_g, b_a, &w, &f);
+        assert_int_equal(se23_ins_imu(&ins, k * IT_DT_NS, k, &w, &f), SE23_INS_USED);
+    }
+    assert_int_equal(se23_ins_state(&ins, &out, &t), SE23_OK);
+    /* the detector saw rest nearly always (threshold 12 for a mean of ~6) */
+    assert_true(ins.c.zupt_used > 60 * 200 * 9 / 10);
+    assert_int_equal(ins.c.zaru_used, ins.c.zupt_used);
+    for (int i = 0; i < 3; ++i) {
+        const double sv = sqrt(P_at(&out, 3 + i));
+        assert_true(sv < 0.01); /* no more than the ZUPT's own 1-sigma */
+        assert_true(fabs((double)out.T.v.v[i]) < 4.0 * sv);
+        /* gyro bias: observable at rest through ZARU (b estimates add to w_meas) */
+        const double sbg = sqrt(P_at(&out, 9 + i));
+        assert_true(sbg < 1e-4);
+        assert_true(fabs((double)out.b_g.v[i] - b_g[i]) < 4.0 * sbg + 1e-5);
+    }
+    /* vertical accelerometer bias: observable through ZUPT (the horizontal
+     * ones are a tilt at rest, the prior keeps them) */
+    {
+        const double sba = sqrt(P_at(&out, 14));
+        assert_true(sba < 1e-3); /* prior 3.2e-2 */
+        assert_true(fabs((double)out.b_a.v[2] - b_a[2]) < 4.0 * sba);
+        assert_true(fabs((double)out.b_a.v[2] - b_a[2]) < 2e-3);
+    }
+    /* without ZUPT the same run drifts: the test can fail */
+    c.zupt = 0;
+    start(&c, 15);
+    se23t_rng_seed(&rng, 7);
+    for (int k = 1; k <= 10 * 200; ++k) {
+        se23_vec3_t w, f;
+        it_rest_sample(&rng, NULL, b_g, b_a, &w, &f);
+        (void)se23_ins_imu(&ins, k * IT_DT_NS, k, &w, &f);
+    }
+    assert_int_equal(se23_ins_state(&ins, &out, &t), SE23_OK);
+    assert_true(fabs((double)out.T.v.v[2]) > 0.05); /* ~ b_a t = 0.08 m/s */
+}
+
+/* A level body at rest at the origin with the antenna at lever l: fixes at
+ * l (R = I). With the lever configured the body goes to the origin; with
+ * it not, it goes to the antenna. */
+static void test_lever_arm_places_the_body(void **state)
+{
+    (void)state;
+    const double lever[3] = {0.5, -0.3, -1.0};
+    for (int with_lever = 0; with_lever <= 1; ++with_lever) {
+        se23_ins_config_t c;
+        se23_gauss_t out;
+        int64_t t;
+        it_config(&c, 1);
+        for (int i = 0; i < 3; ++i) {
+            c.lever_b.v[i] = (se23_real_t)(with_lever ? lever[i] : 0.0);
+        }
+        start(&c, 15);
+        for (int k = 1; k <= 10 * 200; ++k) {
+            se23_vec3_t w, f;
+            it_rest_sample(NULL, NULL, NULL, NULL, &w, &f);
+            assert_int_equal(se23_ins_imu(&ins, k * IT_DT_NS, k, &w, &f), SE23_INS_USED);
+            if (k % 40 == 0) {
+                se23_ins_gnss_t fix;
+                it_fix(k * IT_DT_NS, lever, 0.05, &fix);
+                fix.has_vel = 1;
+                for (int i = 0; i < 3; ++i) {
+                    fix.sigma_v.v[i] = (se23_real_t)0.05;
+                }
+                assert_int_equal(se23_ins_gnss(&ins, &fix), SE23_INS_USED);
+            }
+        }
+        assert_int_equal(se23_ins_state(&ins, &out, &t), SE23_OK);
+        for (int i = 0; i < 3; ++i) {
+            const double expect = with_lever ? 0.0 : lever[i];
+            assert_near((double)out.T.p.v[i], expect, 0.02, 0.0);
+            assert_near((double)out.T.v.v[i], 0.0, 0.01, 0.0);
+        }
+    }
+}
+
+/* Fixes that jump 50 m away: gated, then after gate_recover of them the
+ * filter resets position to the fix and flags it; the next fix passes. */
+static void test_gate_recovery(void **state)
+{
+    (void)state;
+    const double far[3] = {50.0, 0.0, 0.0};
+    for (int recover = 0; recover <= 5; recover += 5) {
+        se23_ins_config_t c;
+        se23_gauss_t out;
+        int64_t t;
+        int k = 0, resets = 0;
+        it_config(&c, 1);
+        c.gate_recover = recover;
+        c.zupt = 0;
+        start(&c, 15);
+        for (int fixno = 1; fixno <= 8; ++fixno) {
+            se23_ins_gnss_t fix;
+            se23_ins_verdict_t v;
+            assert_int_equal(it_run_rest(&ins, NULL, NULL, k * IT_DT_NS, k, 40), 40);
+            k += 40;
+            it_fix(k * IT_DT_NS, far, 0.5, &fix);
+            v = se23_ins_gnss(&ins, &fix);
+            if (recover == 0 || fixno < recover) {
+                assert_int_equal(v, SE23_INS_GATED);
+                assert_true((ins.status & SE23_INS_ST_GNSS_GATED) != 0);
+            } else if (fixno == recover) {
+                assert_int_equal(v, SE23_INS_RESET);
+                assert_true((ins.status & SE23_INS_ST_GATE_RESET) != 0);
+                assert_int_equal(se23_ins_state(&ins, &out, &t), SE23_OK);
+                assert_near((double)out.T.p.v[0], 50.0, 1e-4, 0.0);
+                assert_near(P_at(&out, 6), 0.25, 1e-6, 1e-5);
+                assert_int_equal(se23_gauss_check(&out), SE23_OK);
+                resets++;
+            } else {
+                assert_int_equal(v, SE23_INS_USED);
+                assert_int_equal(ins.status & SE23_INS_ST_GATE_RESET, 0);
+            }
+        }
+        assert_int_equal(ins.c.gate_resets, resets);
+        assert_int_equal(ins.c.gnss_gated, recover == 0 ? 8 : recover);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_zupt_holds_rest_and_estimates_biases),
+        cmocka_unit_test(test_lever_arm_places_the_body),
+        cmocka_unit_test(test_gate_recovery),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,111 @@
+/* Unit tests of src/ins_outage.c: a forward jump of the stream is confirmed
+ * by SE23_INS_OUTAGE_CONFIRM consistent samples and carried across with the
+ * covariance inflated; inconsistent over-gap samples never confirm one; an
+ * outage beyond max_outage (even of years) loses the state at bounded cost
+ * and a new init recovers. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "ins_test.h"
+#include "se23/ins.h"
+#include "se23_test.h"
+
+static se23_ins_t ins; /* large: static */
+
+static void start(void)
+{
+    se23_ins_config_t c;
+    se23_gauss_t g;
+    it_config(&c, 1);
+    c.zupt = 0;
+    assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
+    it_initial(15, 1e-3, 0.01, 0.1, &g);
+    assert_int_equal(se23_ins_init(&ins, 0, &g), SE23_OK);
+    assert_int_equal(it_run_rest(&ins, NULL, NULL, 0, 0, 100), 100);
+}
+
+static se23_ins_verdict_t sample(long long t, long long seq)
+{
+    se23_vec3_t w, f;
+    it_rest_sample(NULL, NULL, NULL, NULL, &w, &f);
+    return se23_ins_imu(&ins, t, seq, &w, &f);
+}
+
+static void test_outage_confirmed_and_carried_across(void **state)
+{
+    (void)state;
+    const long long t0 = 100 * IT_DT_NS + 2000000000LL; /* 2 s later */
+    double p_before, p_after;
+    start();
+    p_before = (double)ins.g.P.m[SE23_GAUSS_NMAX * 6 + 6];
+    assert_int_equal(sample(t0, 501), SE23_INS_BAD_DT);
+    assert_int_equal(sample(t0 + IT_DT_NS, 502), SE23_INS_BAD_DT);
+    assert_int_equal(sample(t0 + 2 * IT_DT_NS, 503), SE23_INS_OUTAGE);
+    assert_int_equal(ins.c.time_resets, 1);
+    assert_int_equal(ins.c.imu_bad_dt, 3);
+    assert_int_equal(ins.t_ns, t0 + 2 * IT_DT_NS);
+    assert_true((ins.status & SE23_INS_ST_DEGRADED) != 0);
+    p_after = (double)ins.g.P.m[SE23_GAUSS_NMAX * 6 + 6];
+    /* rho grows by at least (a t^2 / 2)^2 with a = 1 m/s^2, t = 2 s */
+    assert_true(p_after >= p_before + 4.0 - 1e-3);
+    assert_int_equal(se23_gauss_check(&ins.g), SE23_OK);
+    /* the stream goes on from there, and a fix ends the degraded state */
+    assert_int_equal(sample(t0 + 3 * IT_DT_NS, 504), SE23_INS_USED);
+    {
+        const double p0[3] = {0.0, 0.0, 0.0};
+        se23_ins_gnss_t fix;
+        it_fix(t0 + 3 * IT_DT_NS, p0, 1.0, &fix);
+        assert_int_equal(se23_ins_gnss(&ins, &fix), SE23_INS_USED);
+        assert_int_equal(ins.status & SE23_INS_ST_DEGRADED, 0);
+    }
+}
+
+static void test_inconsistent_over_gap_samples_never_confirm(void **state)
+{
+    (void)state;
+    const long long t0 = 100 * IT_DT_NS + 2000000000LL;
+    start();
+    for (int k = 0; k < 20; ++k) { /* seq not consecutive */
+        assert_int_equal(sample(t0 + k * IT_DT_NS, 1000 + 2 * k), SE23_INS_BAD_DT);
+    }
+    for (int k = 0; k < 20; ++k) { /* consecutive seq, but 1 s apart */
+        assert_int_equal(sample(t0 + 1000000000LL * (k + 1), 5000 + k), SE23_INS_BAD_DT);
+    }
+    assert_int_equal(ins.c.time_resets, 0);
+    assert_int_equal(ins.t_ns, 100 * IT_DT_NS);
+}
+
+static void test_outage_beyond_the_limit_loses_the_state(void **state)
+{
+    (void)state;
+    const long long years = 100000000000000000LL; /* 3 years */
+    se23_gauss_t g, out;
+    int64_t t;
+    start();
+    assert_int_equal(sample(years, 1), SE23_INS_BAD_DT);
+    assert_int_equal(sample(years + IT_DT_NS, 2), SE23_INS_BAD_DT);
+    assert_int_equal(sample(years + 2 * IT_DT_NS, 3), SE23_INS_OUTAGE);
+    assert_true((ins.status & SE23_INS_ST_LOST) != 0);
+    assert_int_equal(ins.status & SE23_INS_ST_INITIALISED, 0);
+    assert_int_equal(sample(years + 3 * IT_DT_NS, 4), SE23_INS_EARLY);
+    assert_int_equal(se23_ins_state(&ins, &out, &t), SE23_ERR_DIM);
+    it_initial(15, 1e-3, 0.01, 0.1, &g);
+    assert_int_equal(se23_ins_init(&ins, years + 3 * IT_DT_NS, &g), SE23_OK);
+    assert_int_equal(ins.status & SE23_INS_ST_LOST, 0);
+    assert_int_equal(sample(years + 4 * IT_DT_NS, 5), SE23_INS_USED);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_outage_confirmed_and_carried_across),
+        cmocka_unit_test(test_inconsistent_over_gap_samples_never_confirm),
+        cmocka_unit_test(test_outage_beyond_the_limit_loses_the_state),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
