@@ -19,8 +19,8 @@
  * elimination step) it is positive semidefinite to rounding whatever R,
  * and exactly symmetric (upper triangle computed, mirrored). Only the
  * 3-column blocks of H (phi, nu, rho, b_g, b_a) that hold a nonzero take
- * part: the models below touch one to three blocks, so a GNSS update costs about
- * 800 multiply-adds instead of the 9,500 of the dense Joseph form
+ * part: the models below touch one to three blocks, so a GNSS update
+ * costs about 800 multiply-adds instead of the 9,500 of the dense Joseph form
  * (src/kalman_parts.c gives the count). P+ is the covariance of the error
  * at the old estimate; the O(|dx|) change of coordinates of the
  * retraction (a Jacobian close to I) is neglected, as usual in
@@ -53,9 +53,10 @@
  *
  * Zero velocity (ZUPT) needs no model of its own: at rest v = 0, so
  * se23_meas_vel_nav with v_n the zero vector (H = [0, R, 0, 0, 0]) is the
- * update; se23_meas_vel_body with v_b = 0 is the same constraint in body
- * axes (equivalent for an isotropic cov). Pair it with se23_meas_zero_rate
- * to also observe the gyro bias while standing still.
+ * update; se23_meas_vel_body with v_b = 0 states the same constraint in
+ * body axes (cov then in body axes; its H also couples phi through
+ * (R^T vbar)^). Pair it with se23_meas_zero_rate to also observe the gyro
+ * bias while standing still.
  *
  * All functions accept outputs that alias inputs. The models write every
  * element of their output (rows beyond m and the bias columns 0).
@@ -135,14 +136,14 @@ se23_status_t se23_meas_vel_nav(const se23_pose_t *T, const se23_vec3_t *v_n,
  * y = the velocity of a GNSS antenna at lever arm l_b (body frame) measured
  * in the nav frame. The antenna moves with v + R (w x l_b), w the true body
  * angular rate in body axes. The gyro measures the rate relative to inertial
- * space; the Earth-rate part of it, |w_ie| |l_b| = 7.3e-5 m/s per metre of
- * lever, is neglected (it is the nav-frame rate that moves the antenna
- * relative to the Earth). With the gyro bias convention of gauss.h
- * (w = w_meas + b_g), the caller passes the bias-corrected rate
- * w_b = w_meas + bbar_g and
+ * space, while the antenna's velocity relative to the Earth follows the
+ * rate relative to the nav frame; the difference, the Earth rate, adds
+ * |w_ie| |l_b| = 7.3e-5 m/s per metre of lever and is neglected. With the
+ * gyro bias convention of gauss.h (w = w_meas + b_g), the caller passes
+ * the bias-corrected rate w_b = w_meas + bbar_g and
  *   h(T, b) = v + R (w x l_b),  w = w_b + db_g.
- * Linearised at Tbar, bbar with R = Rbar exp(phi^), v = vbar + Rbar nu + O(|xi|^2),
- * u = w_b x l_b, and a^ b = a x b:
+ * Linearised at Tbar, bbar with R = Rbar exp(phi^),
+ * v = vbar + Rbar nu + O(|xi|^2), u = w_b x l_b and a^ b = a x b:
  *   phi:  Rbar phi^ u = -Rbar u^ phi                        -> -R u^
  *   nu:   Rbar nu                                           ->  R
  *   b_g:  Rbar (db_g x l_b) = -Rbar l_b^ db_g               -> -R l_b^

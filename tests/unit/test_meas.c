@@ -193,7 +193,8 @@ static void test_meas_models_match_central_differences(void **state)
                     assert_true(out.H[S * i + j] == SE23_R(0));
                 }
                 /* Only the lever and rate models on the gyro bias. */
-                for (int j = SE23_IDX_BG; j < SE23_IDX_BA && w != VEL_NAV_LEVER && w != ZERO_RATE; ++j) {
+                const int uses_bg = (w == VEL_NAV_LEVER || w == ZERO_RATE);
+                for (int j = SE23_IDX_BG; j < SE23_IDX_BA && !uses_bg; ++j) {
                     assert_true(out.H[S * i + j] == SE23_R(0));
                 }
                 /* Per block: the CD's error (1e-7 absolute and relative)
@@ -202,7 +203,8 @@ static void test_meas_models_match_central_differences(void **state)
                  * wrong sign or block fails. */
                 for (int j = 0; j < S; ++j) {
                     const double s = block_scale(cd, j);
-                    assert_near(out.H[S * i + j], cd[i][j], 1e-7 * (1.0 + s) + 32.0 * SE23T_EPS * s, 0.0);
+                    const double bound = 1e-7 * (1.0 + s) + 32.0 * SE23T_EPS * s;
+                    assert_near(out.H[S * i + j], cd[i][j], bound, 0.0);
                 }
             }
         }
