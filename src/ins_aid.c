@@ -58,8 +58,13 @@ int se23_ins_zupt(se23_ins_t *ins, const se23_imu_sample_t *s)
         st = update_work(ins, NULL);
     }
     if ((st == SE23_OK) && (ins->cfg.bias_states != 0)) {
+        /* at rest the gyro senses the Earth rate, R^T Omega (zero on flat
+         * Earth): the reading less it should be -b_g */
+        se23_vec3_t w_ie_b, w_rest;
+        se23_m3_tmul_v3(&ins->work.T.R, &ins->model.w_ie_n, &w_ie_b);
+        se23_v3_axpy(&s->w_ib_b, SE23_R(-1), &w_ie_b, &w_rest);
         diag_cov(sw, sw, sw, &C);
-        st = se23_meas_zero_rate(&s->w_ib_b, &ins->work.b_g, &C, &ins->meas);
+        st = se23_meas_zero_rate(&w_rest, &ins->work.b_g, &C, &ins->meas);
         if (st == SE23_OK) {
             st = update_work(ins, NULL);
         }

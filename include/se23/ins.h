@@ -75,11 +75,19 @@
  * its own time (same operations, same order).
  *
  * Zero-velocity updates. With zupt enabled the detector of stationary.h
- * runs on every accepted sample; while its window is stationary, each
+ * runs on every accepted sample, on the readings as the filter corrects
+ * them (w + b_g - R^T Omega, R (f + b_a): at rest only the sensor noise
+ * remains, so the detector's sigmas are the noise's; with 9 states the
+ * biases stay in and the sigmas must allow for them). Because SHOE takes
+ * the gravity direction from the window, a start whose acceleration grows
+ * smoothly from zero would pass it; the filter knows where gravity is and
+ * also requires the window's mean acceleration R fbar + g to be noise
+ * (src/ins.c, at_rest). While the window is stationary, each
  * sample applies v = 0 (nav frame, 1-sigma zupt_sigma_v) and, with bias
- * states, w_meas + b_g = 0 (1-sigma zaru_sigma_w per axis; Earth rate
- * neglected, so leave it off with a navigation-grade gyro on rotating
- * Earth). Counted in zupt_used / zaru_used.
+ * states, w_meas + b_g = R^T Omega (the Earth rate a body at rest senses;
+ * zero on flat Earth; 1-sigma zaru_sigma_w per axis, its O(|Omega| |phi|)
+ * dependence on the attitude error neglected). Counted in zupt_used /
+ * zaru_used.
  *
  * Alignment. se23_ins_align starts a static alignment: the first
  * stationary window gives roll and pitch (align.h), heading from the caller

@@ -17,6 +17,7 @@
 
 #include "../lcm/harness.h"
 #include "replay.h"
+#include "se23/earth.h"
 #include "se23/ins.h"
 #include "se23lcm_gnss_fix.h"
 #include "se23lcm_imu_sample.h"
@@ -66,6 +67,10 @@ static void usage(FILE *f)
             "  --lever X,Y,Z         GNSS antenna lever arm, body frame [m] (0,0,0)\n"
             "  --delay-horizon S     fuse fixes up to S s late at their own time (0.25;\n"
             "                        the ring holds 2 S of samples at the IMU rate)\n"
+            "  --zupt on|off         zero-velocity/-rate updates at rest, from the\n"
+            "                        stationary detector (off)\n"
+            "  --zupt-window N       detector window [samples] (20)\n"
+            "  --zupt-alpha A        detector's false-motion probability at rest (0.01)\n"
             "  --max-gap S           longest interval one sample may bridge (25 samples)\n"
             "  --max-outage S        longest outage carried across (10)\n"
             "  --preint S            publish preintegrated factors of S seconds (0 = off)\n"
@@ -75,13 +80,70 @@ static void usage(FILE *f)
             "  --progress            progress line on stderr\n");
 }
 
+/* Standard normal quantile of p in (0.5, 1) (Acklam's rational
+ * approximation, relative error below 1.2e-9; enough for a threshold). */
+static double normal_quantile(double p)
+{
+    const double a[] = {-3.969683028665376e+01, 2.209460984245205e+02, -2.759285104469687e+02,
+                        1.383577518672690e+02, -3.066479806614716e+01, 2.506628277459239e+00};
+    const double b[] = {-5.447609879822406e+01, 1.615858368580409e+02, -1.556989798598866e+02,
+                        6.680131188771972e+01, -1.328068155288572e+01};
+    const double c[] = {-7.784894002430293e-03, -3.223964580411365e-01, -2.400758277161838e+00,
+                        -2.549732539343734e+00, 4.374664141464968e+00, 2.938163982698783e+00};
+    const double d[] = {7.784695709041462e-03, 3.224671290700398e-01, 2.445134137142996e+00,
+                        3.754408661907416e+00};
+    double q, r;
+    if (p < 0.97575) {
+        q = p - 0.5;
+        r = q * q;
+        return (((((a[0] * r + a[1]) * r + a[2]) * r + a[3]) * r + a[4]) * r + a[5]) * q /
+               (((((b[0] * r + b[1]) * r + b[2]) * r + b[3]) * r + b[4]) * r + 1.0);
+    }
+    q = sqrt(-2.0 * log(1.0 - p));
+    return -(((((c[0] * q + c[1]) * q + c[2]) * q + c[3]) * q + c[4]) * q + c[5]) /
+           ((((d[0] * q + d[1]) * q + d[2]) * q + d[3]) * q + 1.0);
+}
+
+/*
+ * The stationary detector and the rest updates from the IMU profile. The
+ * detector sees the readings corrected by the filter (ins.h): its
+ * per-sample sigmas are the white noise (density * sqrt(rate)), plus, with
+ * 9 states (biases not estimated), the profile's constant bias as if it
+ * were noise (stationary.h: raise the sigmas, not the threshold).
+ * Threshold: the chi^2_{6W-2} quantile of
+ * stationary.h for a false "moving" probability alpha per window
+ * (Wilson-Hilferty). ZUPT: v = 0 to 1 cm/s (a vehicle at rest; its own
+ * vibration); ZARU: the gyro's per-sample noise.
+ */
+static void zupt_config(const harness_imu_profile_t *prof, double rate, double lat, int window,
+                        double alpha, se23_ins_config_t *c)
+{
+    const double sg = prof->gyro_noise * sqrt(rate), sa = prof->accel_noise * sqrt(rate);
+    const double bias = c->bias_states ? 0.0 : 1.0;
+    const double k = 6.0 * window - 2.0, z = normal_quantile(1.0 - alpha);
+    const double wh = 1.0 - 2.0 / (9.0 * k) + z * sqrt(2.0 / (9.0 * k));
+    se23_real_t g;
+    c->detector.window = window;
+    c->detector.sigma_a = sqrt(sa * sa + bias * prof->accel_bias0 * prof->accel_bias0);
+    c->detector.sigma_g = sqrt(sg * sg + bias * prof->gyro_bias0 * prof->gyro_bias0);
+    c->detector.gravity = se23_earth_gravity(lat, 0.0, &g) == SE23_OK ? g : 9.80665;
+    c->detector.threshold = k * wh * wh * wh / window;
+    c->zupt_sigma_v = 0.01;
+    c->zaru_sigma_w = sg > 1e-9 ? sg : 1e-9;
+    if (c->detector.sigma_a <= 0.0 || c->detector.sigma_g <= 0.0) { /* the perfect IMU */
+        c->detector.sigma_a = 1e-3;
+        c->detector.sigma_g = 1e-4;
+    }
+}
+
 static int parse_args(int argc, char **argv, node_opts_t *o, se23_ins_config_t *c)
 {
     const double inf = HUGE_VAL;
     double rate = 200.0, lat_deg = 45.0, max_gap = -1.0, gate = 30.0, horizon = 0.25;
     double max_outage = 10.0, preint = 0.0, lever[3] = {0.0, 0.0, 0.0};
-    int64_t recover = 5;
-    int profile = HARNESS_IMU_MEMS, earth = 1, bias = 1, i;
+    int64_t recover = 5, window = 20;
+    double alpha = 0.01;
+    int profile = HARNESS_IMU_MEMS, earth = 1, bias = 1, zupt = 0, i;
     const harness_imu_profile_t *prof;
     const harness_opt_t opts[] = {
         {"--in", HOPT_STR, &o->in_url, 0, 0, NULL},
@@ -96,6 +158,9 @@ static int parse_args(int argc, char **argv, node_opts_t *o, se23_ins_config_t *
         {"--gate-recover", HOPT_I64, &recover, 0, 0, NULL},
         {"--lever", HOPT_VEC3, lever, -100.0, 100.0, NULL},
         {"--delay-horizon", HOPT_DOUBLE, &horizon, 0.0, 10.0, NULL},
+        {"--zupt", HOPT_CHOICE, &zupt, 0, 0, harness_on_off},
+        {"--zupt-window", HOPT_I64, &window, 0, 0, NULL},
+        {"--zupt-alpha", HOPT_DOUBLE, &alpha, 1e-6, 0.5, NULL},
         {"--max-gap", HOPT_DOUBLE, &max_gap, 1e-6, 1.0, NULL},
         {"--max-outage", HOPT_DOUBLE, &max_outage, 0.0, (double)SE23_INS_MAX_OUTAGE, NULL},
         {"--preint", HOPT_DOUBLE, &preint, 0.0, inf, NULL},
@@ -117,6 +182,10 @@ static int parse_args(int argc, char **argv, node_opts_t *o, se23_ins_config_t *
     }
     if (recover < 0 || recover > 1000000) {
         fprintf(stderr, "se23-ins: --gate-recover must be in [0, 1e6]\n");
+        return -1;
+    }
+    if (window < 2 || window > SE23_STATIONARY_WMAX) {
+        fprintf(stderr, "se23-ins: --zupt-window must be in [2, %d]\n", SE23_STATIONARY_WMAX);
         return -1;
     }
     prof = harness_imu_profile(profile);
@@ -148,6 +217,8 @@ static int parse_args(int argc, char **argv, node_opts_t *o, se23_ins_config_t *
     c->gate_recover = (int)recover;
     c->delay_horizon = horizon;
     c->preint_window = preint;
+    c->zupt = zupt;
+    zupt_config(prof, rate, lat_deg * DEG, (int)window, alpha, c);
     return 0;
 }
 
