@@ -40,7 +40,7 @@ static void usage(FILE *f)
     fprintf(f,
             "usage: se23-report [options] LOG...\n"
             "  --plots DIR         write errors.csv and PNG plots to DIR\n"
-            "  --plot-script PATH  plotter (tools/report/plot.py)\n"
+            "  --plot-script PATH  plotter (tools/report/plot.py; \"\": CSV files only)\n"
             "  --python PATH       interpreter with matplotlib (/usr/bin/python3)\n"
             "  --check             exit 1 unless consistent: each error component\n"
             "                      within 3 sigma in >= --check-frac of the epochs (0.9)\n"
@@ -349,7 +349,9 @@ static int report(const rep_opts_t *o, log_data_t *d)
         write_csv(path, ep, n);
         snprintf(path, sizeof path, "%s/gnss.csv", o->plots_dir);
         write_gnss_csv(path, d);
-        if (make_plots(o, d) != 0) {
+        if (o->plot_script[0] == '\0') {
+            printf("\n  data: %s/errors.csv, %s/gnss.csv\n", o->plots_dir, o->plots_dir);
+        } else if (make_plots(o, d) != 0) {
             fprintf(stderr, "se23-report: plotting failed (needs %s with matplotlib)\n",
                     o->python);
             ok = 0;

@@ -53,6 +53,7 @@ typedef struct {
     double lever[3];      /* GNSS antenna w.r.t. the IMU, body [m] */
     double gnss_latency;  /* [s] */
     double stationary;    /* rest before the motion [s] */
+    int biases;           /* 0: the profile's biases and bias walks left out */
     double truth_rate;
     int64_t seed;
     double init_sigma[3]; /* attitude [deg], velocity [m/s], position [m] */
@@ -91,6 +92,7 @@ static void usage(FILE *f)
             "  --speed X                       pacing: 1 real time, 0 flat out\n"
             "                                  (default 0 for file://, else 1)\n"
             "  --no-track                      no tracking correction (tests)\n"
+            "  --biases on|off                 the profile's biases and bias walks (on)\n"
             "  --progress                      progress line on stderr\n");
 }
 
@@ -121,12 +123,14 @@ static int parse_args(int argc, char **argv, sim_opts_t *o)
         {"--url", HOPT_STR, &o->url, 0, 0, NULL},
         {"--speed", HOPT_DOUBLE, &o->speed, 0.0, inf, NULL},
         {"--no-track", HOPT_FLAG, &o->track, 0, 0, NULL},
+        {"--biases", HOPT_CHOICE, &o->biases, 0, 0, harness_on_off},
         {"--progress", HOPT_FLAG, &o->progress, 1, 0, NULL},
     };
     o->scenario = TRAJ_UAV;
     o->duration = -1.0;
     o->imu_rate = 200.0;
     o->profile = HARNESS_IMU_MEMS;
+    o->biases = 1;
     o->earth = 1;
     o->lat_deg = 45.0;
     o->gnss_rate = 5.0;
@@ -193,8 +197,8 @@ static void publish_init(lcm_t *lc, const sim_opts_t *o, const truth_state_t *x,
         sig[i] = o->init_sigma[0] * (3.14159265358979323846 / 180.0);
         sig[3 + i] = o->init_sigma[1];
         sig[6 + i] = o->init_sigma[2];
-        sig[9 + i] = prof->gyro_bias0;
-        sig[12 + i] = prof->accel_bias0;
+        sig[9 + i] = o->biases ? prof->gyro_bias0 : 0.0;
+        sig[12 + i] = o->biases ? prof->accel_bias0 : 0.0;
     }
     for (i = 0; i < 3; i++) {
         phi.v[i] = sig[i] * rng_normal(rng);
@@ -418,7 +422,16 @@ int main(int argc, char **argv)
     harness_catch_stop_signals();
 
     env = truth_env_ned(o.lat_deg * DEG_L, o.earth);
-    imu_err_init(&err, harness_imu_profile(o.profile), (uint64_t)o.seed);
+    {
+        harness_imu_profile_t prof = *harness_imu_profile(o.profile);
+        if (!o.biases) { /* white noise only (a 9-state filter's model) */
+            prof.gyro_bias0 = 0.0;
+            prof.accel_bias0 = 0.0;
+            prof.gyro_bias_rw = 0.0;
+            prof.accel_bias_rw = 0.0;
+        }
+        imu_err_init(&err, &prof, (uint64_t)o.seed);
+    }
     rng_seed(&rng_gnss, (uint64_t)o.seed ^ 0x5a5a5a5a5a5a5a5aULL);
     rng_seed(&rng_init, (uint64_t)o.seed ^ 0x0123456789abcdefULL);
 
