@@ -70,8 +70,7 @@ static se23_status_t config_check(const se23_ins_config_t *cfg)
         (is_flag(cfg->zupt) == 0) || (cfg->gate_recover < 0)) {
         return SE23_ERR_DOMAIN;
     }
-    if ((cfg->zupt != 0) && ((cfg->zupt_sigma_v <= SE23_R(0)) ||
-                             ((cfg->bias_states != 0) && (cfg->zaru_sigma_w <= SE23_R(0))))) {
+    if ((cfg->zupt != 0) && (cfg->zupt_sigma_v <= SE23_R(0))) {
         return SE23_ERR_DOMAIN;
     }
     if ((cfg->dt_nominal <= SE23_R(0)) || (cfg->max_gap < cfg->dt_nominal) ||

@@ -57,7 +57,7 @@ int se23_ins_zupt(se23_ins_t *ins, const se23_imu_sample_t *s)
     if (st == SE23_OK) {
         st = update_work(ins, NULL);
     }
-    if ((st == SE23_OK) && (ins->cfg.bias_states != 0)) {
+    if ((st == SE23_OK) && (ins->cfg.bias_states != 0) && (sw > SE23_R(0))) {
         /* at rest the gyro senses the Earth rate, R^T Omega (zero on flat
          * Earth): the reading less it should be -b_g */
         se23_vec3_t w_ie_b, w_rest;
@@ -80,7 +80,7 @@ int se23_ins_zupt(se23_ins_t *ins, const se23_imu_sample_t *s)
         return 0;
     }
     se23_ins_count(&ins->c.zupt_used);
-    if (ins->cfg.bias_states != 0) {
+    if ((ins->cfg.bias_states != 0) && (sw > SE23_R(0))) {
         se23_ins_count(&ins->c.zaru_used);
     }
     return 1;

@@ -11,7 +11,8 @@
 static se23_status_t align_check(const se23_ins_t *ins, const se23_ins_align_t *a)
 {
     const se23_real_t reals[] = {a->p_n.v[0], a->p_n.v[1], a->p_n.v[2], a->sigma_p,
-                                 a->yaw, a->sigma_yaw, a->sigma_v, a->sigma_bg, a->sigma_ba};
+                                 a->yaw,       a->sigma_yaw, a->sigma_v,  a->sigma_bg,
+                                 a->sigma_ba,  a->duration};
     const int bias = ins->cfg.bias_states;
     se23_status_t st = SE23_OK;
     const size_t n_bytes = sizeof reals;
@@ -21,7 +22,8 @@ static se23_status_t align_check(const se23_ins_t *ins, const se23_ins_align_t *
                (a->sigma_p <= SE23_R(0)) || (a->sigma_v <= SE23_R(0)) ||
                ((a->gyrocompass == 0) && (a->sigma_yaw <= SE23_R(0))) ||
                ((bias != 0) && ((a->sigma_bg <= SE23_R(0)) || (a->sigma_ba <= SE23_R(0)))) ||
-               (a->sigma_ba < SE23_R(0))) {
+               (a->sigma_ba < SE23_R(0)) || (a->duration < SE23_R(0)) ||
+               (a->duration > SE23_INS_MAX_OUTAGE)) {
         st = SE23_ERR_DOMAIN;
     } else {
         /* usable */
@@ -42,6 +44,7 @@ se23_status_t se23_ins_align(se23_ins_t *ins, const se23_ins_align_t *a)
     ins->align = *a;
     ins->status = (ins->status & SE23_INS_ST_EARTH_RATE) | SE23_INS_ST_ALIGNING;
     se23_stationary_reset(&ins->det);
+    se23_ins_align_reset_sums(ins);
     return SE23_OK;
 }
 
@@ -79,15 +82,19 @@ static void put_block(se23_gauss_t *g, int b, int c, const se23_mat3_t *A)
  *   phi_tilt = -(1/g) u^ (b_a + noise)       (body-frame error, R = Rbar exp(phi^)),
  * so Cov(phi) = (sb^2 + sf^2/N)/g^2 (I - u u^T) + syaw^2 u u^T (align.h
  * with the noise std sqrt(sf^2 + N sb^2)) and, with bias states,
- * Cov(phi, db_a) = -(sb^2/g) u^. The gyro bias' effect on a gyrocompass
- * heading is not modelled (its variance is in sigma_bg only).
+ * Cov(phi, db_a) = -(sb^2/g) u^. The gyro bias: levelling alone leaves
+ * the gyro free to measure it, b_g = R^T Omega - w_mean (the reading at
+ * rest is the Earth rate less the bias), to the noise of the window's mean
+ * (var_bg per axis); a gyrocompass spends the gyro on the heading, so there
+ * b_g = 0 with the caller's sigma_bg (its effect on the heading is not
+ * modelled). b_g0 NULL: the gyrocompass case.
  */
 static se23_status_t aligned_state(se23_ins_t *ins, const se23_vec3_t *f_mean,
                                    const se23_mat3_t *R, se23_real_t sigma_f,
-                                   se23_real_t sigma_yaw)
+                                   se23_real_t sigma_yaw, const se23_vec3_t *b_g0,
+                                   se23_real_t var_bg, int W)
 {
     const se23_ins_align_t *a = &ins->align;
-    const int W = ins->det.cfg.window;
     const se23_real_t g0 = ins->det.cfg.gravity;
     const se23_real_t sb = a->sigma_ba;
     const se23_real_t sf_eff = se23_sqrt((sigma_f * sigma_f) + ((se23_real_t)W * sb * sb));
@@ -110,7 +117,7 @@ static se23_status_t aligned_state(se23_ins_t *ins, const se23_vec3_t *f_mean,
     for (i = 0; i < 3; ++i) {
         g->T.v.v[i] = SE23_R(0);
         g->T.p.v[i] = a->p_n.v[i];
-        g->b_g.v[i] = SE23_R(0);
+        g->b_g.v[i] = (b_g0 != NULL) ? b_g0->v[i] : SE23_R(0);
         g->b_a.v[i] = SE23_R(0);
         g->P.m[se23_ins_idx(SE23_IDX_NU + i, SE23_IDX_NU + i)] = a->sigma_v * a->sigma_v;
         g->P.m[se23_ins_idx(SE23_IDX_RHO + i, SE23_IDX_RHO + i)] = a->sigma_p * a->sigma_p;
@@ -122,45 +129,102 @@ static se23_status_t aligned_state(se23_ins_t *ins, const se23_vec3_t *f_mean,
         se23_m3_scale(&C, -(sb * sb) / g0, &C);
         put_block(g, SE23_IDX_PHI, SE23_IDX_BA, &C);
         for (i = 0; i < 3; ++i) {
-            g->P.m[se23_ins_idx(SE23_IDX_BG + i, SE23_IDX_BG + i)] = a->sigma_bg * a->sigma_bg;
+            g->P.m[se23_ins_idx(SE23_IDX_BG + i, SE23_IDX_BG + i)] =
+                (b_g0 != NULL) ? var_bg : (a->sigma_bg * a->sigma_bg);
             g->P.m[se23_ins_idx(SE23_IDX_BA + i, SE23_IDX_BA + i)] = sb * sb;
         }
     }
     return SE23_OK;
 }
 
+/* Adds one stationary sample to the alignment's sums. */
+static void sums_add(se23_ins_align_sums_t *a, const se23_imu_sample_t *s)
+{
+    int i;
+    if (a->n == 0) {
+        a->w0 = s->w_ib_b;
+        a->f0 = s->f_b;
+    }
+    for (i = 0; i < 3; ++i) {
+        const se23_real_t dw = s->w_ib_b.v[i] - a->w0.v[i];
+        const se23_real_t df = s->f_b.v[i] - a->f0.v[i];
+        a->sw.v[i] += dw;
+        a->sf.v[i] += df;
+        a->sww.v[i] += dw * dw;
+        a->sff.v[i] += df * df;
+    }
+    a->n++;
+}
+
+/* mean = x0 + s / n and the per-axis sample variance (n >= 2) of summed
+ * deviations. */
+static void sums_stats(int n, const se23_vec3_t *x0, const se23_vec3_t *s, const se23_vec3_t *ss,
+                       se23_vec3_t *mean, se23_vec3_t *var)
+{
+    const se23_real_t rn = (se23_real_t)n;
+    int i;
+    for (i = 0; i < 3; ++i) {
+        const se23_real_t m = s->v[i] / rn;
+        const se23_real_t v = (ss->v[i] - (rn * m * m)) / (rn - SE23_R(1));
+        mean->v[i] = x0->v[i] + m;
+        var->v[i] = (v > SE23_R(0)) ? v : SE23_R(0);
+    }
+}
+
+void se23_ins_align_reset_sums(se23_ins_t *ins)
+{
+    const se23_ins_align_sums_t none = {0};
+    ins->sums = none;
+}
+
+/* Samples the alignment averages: duration at the nominal rate, at least
+ * one detector window. */
+static int align_samples(const se23_ins_t *ins)
+{
+    const se23_real_t k = ins->align.duration / ins->cfg.dt_nominal;
+    const int n = (k < (se23_real_t)INT16_MAX) ? (int)k : (int)INT16_MAX;
+    return (n > ins->det.cfg.window) ? n : ins->det.cfg.window;
+}
+
 se23_ins_verdict_t se23_ins_align_sample(se23_ins_t *ins, int64_t t_ns,
                                          const se23_imu_sample_t *s)
 {
-    const int W = ins->det.cfg.window;
+    se23_ins_align_sums_t *a = &ins->sums;
     se23_vec3_t w_mean, f_mean, w_var, f_var;
     se23_real_t yaw, sigma_yaw = ins->align.sigma_yaw;
     se23_mat3_t R;
     int stationary = 0;
     se23_status_t st = se23_stationary_add(&ins->det, &s->w_ib_b, &s->f_b, &stationary);
     if ((st != SE23_OK) || (stationary == 0)) {
+        se23_ins_align_reset_sums(ins); /* moving: the rest starts again */
         return SE23_INS_EARLY;
     }
-    st = se23_stationary_mean(&ins->det, &w_mean, &f_mean);
-    if (st == SE23_OK) {
-        st = se23_stationary_var(&ins->det, &w_var, &f_var);
+    sums_add(a, s);
+    if (a->n < align_samples(ins)) {
+        return SE23_INS_EARLY;
     }
-    if ((st == SE23_OK) && (ins->align.gyrocompass != 0)) {
+    sums_stats(a->n, &a->w0, &a->sw, &a->sww, &w_mean, &w_var);
+    sums_stats(a->n, &a->f0, &a->sf, &a->sff, &f_mean, &f_var);
+    if (ins->align.gyrocompass != 0) {
         st = se23_align_gyrocompass(SE23_FRAME_NED, ins->cfg.lat, &f_mean, &w_mean,
-                                    window_std(ins, &w_var, ins->cfg.noise.gyro_noise), W, &R,
+                                    window_std(ins, &w_var, ins->cfg.noise.gyro_noise), a->n, &R,
                                     &yaw, &sigma_yaw);
-    } else if (st == SE23_OK) {
-        st = se23_align_level(SE23_FRAME_NED, &f_mean, ins->align.yaw, &R);
     } else {
-        /* the window's statistics failed: wait for the next one */
+        st = se23_align_level(SE23_FRAME_NED, &f_mean, ins->align.yaw, &R);
     }
     if (st == SE23_OK) {
-        st = aligned_state(ins, &f_mean, &R,
-                           window_std(ins, &f_var, ins->cfg.noise.accel_noise), sigma_yaw);
+        const se23_real_t sw = window_std(ins, &w_var, ins->cfg.noise.gyro_noise);
+        const se23_real_t var_bg = (sw * sw) / (se23_real_t)a->n;
+        se23_vec3_t w_ie_b, b_g0;
+        se23_m3_tmul_v3(&R, &ins->model.w_ie_n, &w_ie_b);
+        se23_v3_axpy(&w_ie_b, SE23_R(-1), &w_mean, &b_g0);
+        st = aligned_state(ins, &f_mean, &R, window_std(ins, &f_var, ins->cfg.noise.accel_noise),
+                           sigma_yaw, (ins->align.gyrocompass != 0) ? NULL : &b_g0, var_bg, a->n);
     }
     if (st == SE23_OK) {
         st = se23_gauss_to_carried(&ins->model, &ins->work, &ins->work);
     }
+    se23_ins_align_reset_sums(ins);
     if (st != SE23_OK) {
         return SE23_INS_EARLY; /* not usable (e.g. |f| far from g): keep aligning */
     }

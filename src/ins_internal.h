@@ -92,6 +92,9 @@ se23_ins_verdict_t se23_ins_fuse_delayed(se23_ins_t *ins, const se23_ins_gnss_t 
 /** An over-gap sample: counted, and maybe the confirmation of an outage. */
 se23_ins_verdict_t se23_ins_over_gap(se23_ins_t *ins, int64_t t_ns, int64_t seq);
 
+/** Empties the alignment's running sums. */
+void se23_ins_align_reset_sums(se23_ins_t *ins);
+
 /**
  * An alignment sample (the filter is aligning): fed to the detector; the
  * first stationary window sets the state. Returns SE23_INS_USED when the

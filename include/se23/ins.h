@@ -89,8 +89,11 @@
  * dependence on the attitude error neglected). Counted in zupt_used /
  * zaru_used.
  *
- * Alignment. se23_ins_align starts a static alignment: the first
- * stationary window gives roll and pitch (align.h), heading from the caller
+ * Alignment. se23_ins_align starts a static alignment: the readings of
+ * the first stationary stretch (duration seconds of consecutive stationary
+ * detector verdicts, at least one window; motion starts the average again)
+ * give roll and pitch (align.h), the gyro bias (its mean reading less the
+ * Earth rate, unless gyrocompassing), heading from the caller
  * or, with gyrocompass set, from the Earth rate the gyro senses; the
  * attitude covariance from the window's statistics, v = 0, p and the bias
  * covariances from the caller. Until then samples are counted imu_early.
@@ -203,7 +206,7 @@ typedef struct {
     int zupt;                   /**< 1: detector and zero-velocity updates */
     se23_stationary_config_t detector; /**< window, noise, threshold (stationary.h) */
     se23_real_t zupt_sigma_v;   /**< 1-sigma of v = 0 at rest [m/s] */
-    se23_real_t zaru_sigma_w;   /**< 1-sigma of w = 0 at rest [rad/s] (bias states) */
+    se23_real_t zaru_sigma_w;   /**< 1-sigma of w = 0 at rest [rad/s] (bias states; 0: no ZARU) */
 } se23_ins_config_t;
 
 /** A GNSS fix in the nav frame, stamped with the time it refers to. */
@@ -224,7 +227,17 @@ typedef struct {
     se23_real_t sigma_v;      /**< 1-sigma of the initial v = 0 [m/s] */
     se23_real_t sigma_bg;     /**< initial gyro bias 1-sigma [rad/s] (bias states) */
     se23_real_t sigma_ba;     /**< initial accel bias 1-sigma [m/s^2] (bias states) */
+    se23_real_t duration;     /**< rest averaged [s] (0: one detector window) */
 } se23_ins_align_t;
+
+/** Running sums of an alignment: deviations from its first sample (no
+ *  cancellation in float). */
+typedef struct {
+    int n;                    /**< samples summed */
+    se23_vec3_t w0, f0;       /**< the first sample */
+    se23_vec3_t sw, sf;       /**< sums of w - w0, f - f0 */
+    se23_vec3_t sww, sff;     /**< sums of their squares, per axis */
+} se23_ins_align_sums_t;
 
 /** A stored state for the replay of delayed fixes. */
 typedef struct {
@@ -279,6 +292,7 @@ typedef struct {
     /* zero-velocity detection and alignment */
     se23_stationary_t det;
     se23_ins_align_t align;
+    se23_ins_align_sums_t sums;
     /* preintegration */
     se23_ins_factor_t fac, fac_out;
     int fac_ready;
