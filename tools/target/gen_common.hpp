@@ -284,6 +284,7 @@ void add_nav(Gens &g); // earth.h, imu.h, preint.h (gen_nav.cpp)
 void add_gauss(Gens &g);  // gauss.h (gen_gauss.cpp)
 void add_kalman(Gens &g); // kalman.h (gen_gauss.cpp)
 void add_preint_unc(Gens &g); // preint_unc.h (gen_preint_unc.cpp)
+void add_align(Gens &g); // stationary.h, align.h (gen_align.cpp)
 
 } // namespace gen
 

@@ -147,6 +147,7 @@ int main(int argc, char **argv)
         add_gauss(g);
         add_kalman(g);
         add_preint_unc(g);
+        add_align(g);
         const auto &rows = list_rows();
         for (const auto &kv : g) {
             bool listed = false;
