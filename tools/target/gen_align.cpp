@@ -314,6 +314,11 @@ void add_stationary(Gens &g)
                                     return st;
                                 },
                                 scale_blocks({1, 1, 1, 1, 1, 1})};
+    // Rows of 48 reals (a reset: one fixed output): half the random rows.
+    for (const char *n : {"se23_stationary_add", "se23_stationary_reset", "se23_stationary_mean",
+                          "se23_stationary_var"}) {
+        g[n].n_random = kRandom / 2;
+    }
 }
 
 // ---- align.h ---------------------------------------------------------------------
