@@ -357,3 +357,194 @@ int tv_call_se23_preint_unc_correct_classic(void)
     return (int)se23_preint_unc_correct_classic(&u.fu, &u.b_g, &u.b_a, &u.out);
 }
 void tv_store_se23_preint_unc_correct_classic(se23_real_t *out) { give_preint(out, &u.out); }
+
+/* ---- stationary.h: a row holds the configuration (window as a real), k and
+ * TV_ST_SAMPLES samples (w, f); the j-th add uses sample j mod TV_ST_SAMPLES.
+ * load runs init and the adds before the call under test (an add that
+ * fails stores nothing; the generator replays the same sequence) -------- */
+
+static struct {
+    se23_stationary_config_t cfg;
+    se23_stationary_t d, before;
+    se23_vec3_t w[TV_ST_SAMPLES], f[TV_ST_SAMPLES];
+    se23_vec3_t a, b;
+    int k, flag;
+} st;
+
+static void take_st_cfg(const se23_real_t **in, se23_stationary_config_t *c)
+{
+    c->window = (int)take1(in);
+    c->sigma_a = take1(in);
+    c->sigma_g = take1(in);
+    c->gravity = take1(in);
+    c->threshold = take1(in);
+}
+/* cfg, k and the samples of a row; then init. */
+static void take_st(const se23_real_t *in)
+{
+    int j;
+    take_st_cfg(&in, &st.cfg);
+    st.k = (int)take1(&in);
+    for (j = 0; j < TV_ST_SAMPLES; ++j) {
+        take(&in, &st.w[j], sizeof st.w[j]);
+        take(&in, &st.f[j], sizeof st.f[j]);
+    }
+    memset(&st.d, 0, sizeof st.d);
+    (void)se23_stationary_init(&st.cfg, &st.d);
+}
+/* The adds 0..n-1 of the row's sequence. */
+static void st_adds(int n)
+{
+    int j;
+    for (j = 0; j < n; ++j) {
+        (void)se23_stationary_add(&st.d, &st.w[j % TV_ST_SAMPLES], &st.f[j % TV_ST_SAMPLES],
+                                  NULL);
+    }
+}
+/* cfg, count, head, stat, stationary; the sentinel where init wrote nothing. */
+static void give_st_state(se23_real_t *out, const se23_stationary_t *d)
+{
+    int unwritten = d->cfg.window == -7;
+    out[0] = unwritten ? TV_SENTINEL : (se23_real_t)d->cfg.window;
+    out[1] = d->cfg.sigma_a;
+    out[2] = d->cfg.sigma_g;
+    out[3] = d->cfg.gravity;
+    out[4] = d->cfg.threshold;
+    out[5] = unwritten ? TV_SENTINEL : (se23_real_t)d->count;
+    out[6] = unwritten ? TV_SENTINEL : (se23_real_t)d->head;
+    out[7] = d->stat;
+    out[8] = unwritten ? TV_SENTINEL : (se23_real_t)d->stationary;
+}
+
+void tv_load_se23_stationary_init(const se23_real_t *in)
+{
+    take_st_cfg(&in, &st.cfg);
+    tv_fill_sentinel(&st.d.cfg.sigma_a, 4 * sizeof(se23_real_t));
+    st.d.cfg.window = -7;
+    st.d.stat = TV_SENTINEL;
+}
+int tv_call_se23_stationary_init(void) { return (int)se23_stationary_init(&st.cfg, &st.d); }
+void tv_store_se23_stationary_init(se23_real_t *out) { give_st_state(out, &st.d); }
+
+/* In-place update: on error the detector must be unchanged; store reports
+ * the sentinel unless it changed (as for se23_preint_add). */
+void tv_load_se23_stationary_add(const se23_real_t *in)
+{
+    take_st(in);
+    st_adds(st.k - 1);
+    memcpy(&st.before, &st.d, sizeof st.d);
+    st.flag = -7;
+}
+int tv_call_se23_stationary_add(void)
+{
+    const int j = (st.k - 1) % TV_ST_SAMPLES;
+    return (int)se23_stationary_add(&st.d, &st.w[j], &st.f[j], &st.flag);
+}
+void tv_store_se23_stationary_add(se23_real_t *out)
+{
+    const int same = memcmp(&st.d, &st.before, sizeof st.d) == 0;
+    out[0] = same ? TV_SENTINEL : st.d.stat;
+    out[1] = same ? TV_SENTINEL : (se23_real_t)st.d.stationary;
+    out[2] = st.flag == -7 ? TV_SENTINEL : (se23_real_t)st.flag;
+    out[3] = same ? TV_SENTINEL : (se23_real_t)st.d.count;
+    out[4] = same ? TV_SENTINEL : (se23_real_t)st.d.head;
+}
+
+void tv_load_se23_stationary_reset(const se23_real_t *in)
+{
+    take_st_cfg(&in, &st.cfg);
+    st.k = (int)take1(&in);
+    take(&in, &st.w[0], sizeof st.w[0]);
+    take(&in, &st.f[0], sizeof st.f[0]);
+    memset(&st.d, 0, sizeof st.d);
+    (void)se23_stationary_init(&st.cfg, &st.d);
+    {
+        int j;
+        for (j = 0; j < st.k; ++j) {
+            (void)se23_stationary_add(&st.d, &st.w[0], &st.f[0], NULL);
+        }
+    }
+}
+int tv_call_se23_stationary_reset(void)
+{
+    se23_stationary_reset(&st.d);
+    return SE23_OK;
+}
+void tv_store_se23_stationary_reset(se23_real_t *out) { give_st_state(out, &st.d); }
+
+void tv_load_se23_stationary_mean(const se23_real_t *in)
+{
+    take_st(in);
+    st_adds(st.k);
+    tv_fill_sentinel(&st.a, sizeof st.a);
+    tv_fill_sentinel(&st.b, sizeof st.b);
+}
+int tv_call_se23_stationary_mean(void) { return (int)se23_stationary_mean(&st.d, &st.a, &st.b); }
+void tv_store_se23_stationary_mean(se23_real_t *out)
+{
+    give(&out, &st.a, sizeof st.a);
+    give(&out, &st.b, sizeof st.b);
+}
+
+void tv_load_se23_stationary_var(const se23_real_t *in) { tv_load_se23_stationary_mean(in); }
+int tv_call_se23_stationary_var(void) { return (int)se23_stationary_var(&st.d, &st.a, &st.b); }
+void tv_store_se23_stationary_var(se23_real_t *out) { tv_store_se23_stationary_mean(out); }
+
+/* ---- align.h ------------------------------------------------------------ */
+
+static struct {
+    se23_frame_t frame;
+    se23_vec3_t f, w;
+    se23_real_t yaw, lat, sigma_f, g, sigma_yaw, sigma_w, yaw_out, sigma_out;
+    int n;
+    se23_mat3_t R, P;
+} al;
+
+void tv_load_se23_align_level(const se23_real_t *in)
+{
+    al.frame = (se23_frame_t)(int)take1(&in);
+    take(&in, &al.f, sizeof al.f);
+    al.yaw = take1(&in);
+    tv_fill_sentinel(&al.R, sizeof al.R);
+}
+int tv_call_se23_align_level(void) { return (int)se23_align_level(al.frame, &al.f, al.yaw, &al.R); }
+void tv_store_se23_align_level(se23_real_t *out) { give(&out, &al.R, sizeof al.R); }
+
+void tv_load_se23_align_cov(const se23_real_t *in)
+{
+    take(&in, &al.R, sizeof al.R);
+    al.sigma_f = take1(&in);
+    al.n = (int)take1(&in);
+    al.g = take1(&in);
+    al.sigma_yaw = take1(&in);
+    tv_fill_sentinel(&al.P, sizeof al.P);
+}
+int tv_call_se23_align_cov(void)
+{
+    return (int)se23_align_cov(&al.R, al.sigma_f, al.n, al.g, al.sigma_yaw, &al.P);
+}
+void tv_store_se23_align_cov(se23_real_t *out) { give(&out, &al.P, sizeof al.P); }
+
+void tv_load_se23_align_gyrocompass(const se23_real_t *in)
+{
+    al.frame = (se23_frame_t)(int)take1(&in);
+    al.lat = take1(&in);
+    take(&in, &al.f, sizeof al.f);
+    take(&in, &al.w, sizeof al.w);
+    al.sigma_w = take1(&in);
+    al.n = (int)take1(&in);
+    tv_fill_sentinel(&al.R, sizeof al.R);
+    al.yaw_out = TV_SENTINEL;
+    al.sigma_out = TV_SENTINEL;
+}
+int tv_call_se23_align_gyrocompass(void)
+{
+    return (int)se23_align_gyrocompass(al.frame, al.lat, &al.f, &al.w, al.sigma_w, al.n, &al.R,
+                                       &al.yaw_out, &al.sigma_out);
+}
+void tv_store_se23_align_gyrocompass(se23_real_t *out)
+{
+    give(&out, &al.R, sizeof al.R);
+    out[0] = al.yaw_out;
+    out[1] = al.sigma_out;
+}

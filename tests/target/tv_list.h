@@ -129,3 +129,24 @@ TV_CUSTOM(se23_preint_unc_add,
 TV_CUSTOM(se23_preint_unc_check, TV_PREINT_UNC_REALS, 0, 0)
 TV_CUSTOM(se23_preint_unc_correct, TV_PREINT_UNC_REALS + 6, TV_PREINT_REALS, 16)
 TV_CUSTOM(se23_preint_unc_correct_classic, TV_PREINT_UNC_REALS + 6, TV_PREINT_REALS, 16)
+
+/* stationary.h (se23_stationary_t travels as its configuration, window
+ * first as a real, then k and TV_ST_SAMPLES samples (w, f); load runs init
+ * and the first adds, the j-th with sample j mod TV_ST_SAMPLES, see
+ * tests/target/tv_custom.c) */
+#include "se23/stationary.h"
+#define TV_ST_SAMPLES 7
+#define TV_ST_CFG 5
+#define TV_ST_IN (TV_ST_CFG + 1 + 6 * TV_ST_SAMPLES)
+#define TV_ST_STATE (TV_ST_CFG + 4)
+TV_CUSTOM(se23_stationary_init, TV_ST_CFG, TV_ST_STATE, 0)
+TV_CUSTOM(se23_stationary_add, TV_ST_IN, 5, 32)
+TV_CUSTOM(se23_stationary_reset, TV_ST_CFG + 1 + 6, TV_ST_STATE, 0)
+TV_CUSTOM(se23_stationary_mean, TV_ST_IN, 6, 16)
+TV_CUSTOM(se23_stationary_var, TV_ST_IN, 6, 16)
+
+/* align.h (se23_frame_t and counts travel as reals) */
+#include "se23/align.h"
+TV_CUSTOM(se23_align_level, 5, 9, 8)
+TV_CUSTOM(se23_align_cov, 13, 9, 8)
+TV_CUSTOM(se23_align_gyrocompass, 10, 11, 16)

@@ -175,6 +175,10 @@ struct Gen {
     // instead of scale, when the error of an output is relative to an input
     // too (an update out = in + d that cancels): scales from (in, out)
     std::function<Row(const Row &in, const Row &out)> scale_io = nullptr;
+    // random rows after the edge rows. Fewer than kRandom where more would
+    // only spend the M7 image's flash (4 MiB, double tables): outputs that
+    // are a fixed function of a few inputs, or long input rows.
+    int n_random = kRandom;
 };
 
 inline LD max_abs(const Row &r, size_t from, size_t n)
@@ -284,6 +288,7 @@ void add_nav(Gens &g); // earth.h, imu.h, preint.h (gen_nav.cpp)
 void add_gauss(Gens &g);  // gauss.h (gen_gauss.cpp)
 void add_kalman(Gens &g); // kalman.h (gen_gauss.cpp)
 void add_preint_unc(Gens &g); // preint_unc.h (gen_preint_unc.cpp)
+void add_align(Gens &g); // stationary.h, align.h (gen_align.cpp)
 
 } // namespace gen
 

@@ -79,7 +79,7 @@ void print_scales(const char *name, const std::vector<LD> &v)
 
 void emit(Ctx &c, const ListRow &lr, const Gen &g, const std::string &corrupt)
 {
-    const int n_vec = g.n_edge + kRandom;
+    const int n_vec = g.n_edge + g.n_random;
     std::vector<LD> ins, outs, scales;
     std::string st;
     bool corrupted = false;
@@ -114,7 +114,7 @@ void emit(Ctx &c, const ListRow &lr, const Gen &g, const std::string &corrupt)
         throw std::runtime_error("--corrupt " + corrupt + ": no output to corrupt");
     }
     std::printf("\n/* %s: %d vectors (%d edge/error cases, %d random) */\n", lr.name, n_vec,
-                g.n_edge, kRandom);
+                g.n_edge, g.n_random);
     if (!ins.empty()) print_values(lr.name, "in", ins, lr.n_in < 3 ? 1 : 3);
     if (!outs.empty()) {
         print_values(lr.name, "out", outs, 3);
@@ -147,6 +147,7 @@ int main(int argc, char **argv)
         add_gauss(g);
         add_kalman(g);
         add_preint_unc(g);
+        add_align(g);
         const auto &rows = list_rows();
         for (const auto &kv : g) {
             bool listed = false;
