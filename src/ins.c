@@ -51,7 +51,7 @@ static se23_status_t config_check(const se23_ins_config_t *cfg)
         cfg->dt_nominal, cfg->max_gap, cfg->max_outage, cfg->outage_accel,
         cfg->outage_rate, cfg->lever_b.v[0], cfg->lever_b.v[1], cfg->lever_b.v[2],
         cfg->gnss_gate, cfg->delay_horizon, cfg->preint_window, cfg->zupt_sigma_v,
-        cfg->zaru_sigma_w};
+        cfg->zaru_sigma_w, cfg->zaru_after};
     const size_t n_bytes = sizeof reals;
     const int n_reals = (int)n_bytes / (int)sizeof reals[0];
     int i;
@@ -67,7 +67,8 @@ static se23_status_t config_check(const se23_ins_config_t *cfg)
     if ((se23_fabs(cfg->lat) > (SE23_R(0.5) * SE23_PI)) || (cfg->gyro_range <= SE23_R(0)) ||
         (cfg->accel_range <= SE23_R(0)) || (cfg->max_outage > SE23_INS_MAX_OUTAGE) ||
         (is_flag(cfg->earth_rotation) == 0) || (is_flag(cfg->bias_states) == 0) ||
-        (is_flag(cfg->zupt) == 0) || (cfg->gate_recover < 0)) {
+        (is_flag(cfg->zupt) == 0) || (cfg->gate_recover < 0) ||
+        (cfg->zaru_after > SE23_INS_MAX_OUTAGE)) {
         return SE23_ERR_DOMAIN;
     }
     if ((cfg->zupt != 0) && (cfg->zupt_sigma_v <= SE23_R(0))) {
@@ -123,6 +124,7 @@ se23_status_t se23_ins_setup(const se23_ins_config_t *cfg, se23_ins_t *ins)
         ins->half_ns = to_ns(SE23_R(0.5) * cfg->dt_nominal);
         ins->max_gap_ns = to_ns(cfg->max_gap);
         ins->horizon_ns = to_ns(cfg->delay_horizon);
+        ins->zaru_after_ns = to_ns(cfg->zaru_after);
         ins->max_missing = (int64_t)per_gap + 1;
         ins->nis_last = SE23_R(0);
         ins->replaying = 0;
@@ -150,6 +152,7 @@ void se23_ins_start(se23_ins_t *ins, int64_t t_ns, const se23_gauss_t *g)
     if (ins->cfg.zupt != 0) {
         se23_stationary_reset(&ins->det);
     }
+    ins->rest_ns = 0;
     se23_ins_ring_restart(ins);
     se23_ins_factor_reset(ins);
 }
@@ -329,7 +332,7 @@ static se23_real_t accel_nis(const se23_ins_t *ins, const se23_vec3_t *fbar_n,
  * is, so the window's mean acceleration must also be noise: accel_nis below
  * the chi^2_3 quantile ACCEL_TEST_Q.
  */
-static int at_rest(se23_ins_t *ins, const se23_imu_sample_t *s)
+static int stationary_window(se23_ins_t *ins, const se23_imu_sample_t *s)
 {
     se23_vec3_t w_ie_b, w, f, f_n, w_mean, fbar_n;
     int stationary = 0;
@@ -345,19 +348,33 @@ static int at_rest(se23_ins_t *ins, const se23_imu_sample_t *s)
     return (accel_nis(ins, &fbar_n, &f) < ACCEL_TEST_Q) ? 1 : 0;
 }
 
+/* The rest updates sample s (dt_ns after the last) calls for: the
+ * detector's verdict, and ZARU once the rest has lasted zaru_after. */
+static int rest_level(se23_ins_t *ins, const se23_imu_sample_t *s, int64_t dt_ns)
+{
+    if ((ins->cfg.zupt == 0) || (stationary_window(ins, s) == 0)) {
+        ins->rest_ns = 0;
+        return SE23_INS_REST_NONE;
+    }
+    if (ins->rest_ns < ins->zaru_after_ns) {
+        ins->rest_ns += dt_ns; /* below zaru_after_ns + max_gap_ns: no overflow */
+    }
+    return (ins->rest_ns >= ins->zaru_after_ns) ? SE23_INS_REST_ZARU : SE23_INS_REST_ZUPT;
+}
+
 /* An accepted live sample: the step, then the bookkeeping. */
 static se23_ins_verdict_t accept(se23_ins_t *ins, int64_t t_ns, int64_t seq,
                                  const se23_imu_sample_t *s)
 {
-    const int stationary = (ins->cfg.zupt != 0) ? at_rest(ins, s) : 0;
-    if (se23_ins_step(ins, t_ns, s, stationary) == 0) {
+    const int rest = rest_level(ins, s, t_ns - ins->t_ns);
+    if (se23_ins_step(ins, t_ns, s, rest) == 0) {
         return SE23_INS_FAILED;
     }
     ins->streak = 0;
     ins->seq = seq;
     se23_ins_count(&ins->c.imu_used);
     se23_ins_factor_add(ins, s);
-    se23_ins_ring_push(ins, s, stationary);
+    se23_ins_ring_push(ins, s, rest);
     service_pending(ins);
     return SE23_INS_USED;
 }

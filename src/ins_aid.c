@@ -43,13 +43,17 @@ static se23_status_t update_work(se23_ins_t *ins, se23_real_t *nis)
     return se23_kalman_update(&ins->work, &ins->meas, &ins->work, nis);
 }
 
-int se23_ins_zupt(se23_ins_t *ins, const se23_imu_sample_t *s)
+int se23_ins_zupt(se23_ins_t *ins, const se23_imu_sample_t *s, int rest)
 {
     const se23_vec3_t zero = {{SE23_R(0), SE23_R(0), SE23_R(0)}};
     const se23_real_t sv = ins->cfg.zupt_sigma_v;
     const se23_real_t sw = ins->cfg.zaru_sigma_w;
+    int zaru = 0;
     se23_mat3_t C;
     se23_status_t st = user_state(ins);
+    if ((rest == SE23_INS_REST_ZARU) && (ins->cfg.bias_states != 0) && (sw > SE23_R(0))) {
+        zaru = 1;
+    }
     diag_cov(sv, sv, sv, &C);
     if (st == SE23_OK) {
         st = se23_meas_vel_nav(&ins->work.T, &zero, &C, &ins->meas);
@@ -57,7 +61,7 @@ int se23_ins_zupt(se23_ins_t *ins, const se23_imu_sample_t *s)
     if (st == SE23_OK) {
         st = update_work(ins, NULL);
     }
-    if ((st == SE23_OK) && (ins->cfg.bias_states != 0) && (sw > SE23_R(0))) {
+    if ((st == SE23_OK) && (zaru != 0)) {
         /* at rest the gyro senses the Earth rate, R^T Omega (zero on flat
          * Earth): the reading less it should be -b_g */
         se23_vec3_t w_ie_b, w_rest;
@@ -80,7 +84,7 @@ int se23_ins_zupt(se23_ins_t *ins, const se23_imu_sample_t *s)
         return 0;
     }
     se23_ins_count(&ins->c.zupt_used);
-    if ((ins->cfg.bias_states != 0) && (sw > SE23_R(0))) {
+    if (zaru != 0) {
         se23_ins_count(&ins->c.zaru_used);
     }
     return 1;

@@ -58,7 +58,7 @@ void se23_ins_ring_restart(se23_ins_t *ins)
     }
 }
 
-void se23_ins_ring_push(se23_ins_t *ins, const se23_imu_sample_t *s, int stationary)
+void se23_ins_ring_push(se23_ins_t *ins, const se23_imu_sample_t *s, int rest)
 {
     se23_ins_hist_t *e;
     if (ins->horizon_ns <= 0) {
@@ -73,7 +73,7 @@ void se23_ins_ring_push(se23_ins_t *ins, const se23_imu_sample_t *s, int station
     e = &ins->ring[(ins->ring_head + ins->ring_count) % N];
     e->s = *s;
     e->t_ns = ins->t_ns;
-    e->stationary = stationary;
+    e->rest = rest;
     ins->ring_count++;
     keep_apart(ins);
     trim(ins);
@@ -109,8 +109,8 @@ se23_ins_verdict_t se23_ins_fuse_delayed(se23_ins_t *ins, const se23_ins_gnss_t 
     ins->g = ins->snap[pick].g;
     ins->t_ns = ins->snap[pick].t_ns;
     ins->last = ins->snap[pick].last;
-    /* Replay: the same steps as live (prediction, the zero-velocity updates
-     * the detector had flagged), the fix at its own time. */
+    /* Replay: the same steps as live (prediction, the rest updates the
+     * detector had called for), the fix at its own time. */
     ins->replaying = 1;
     for (k = 0; k < ins->ring_count; ++k) {
         const se23_ins_hist_t *e = &ins->ring[(ins->ring_head + k) % N];
@@ -122,7 +122,7 @@ se23_ins_verdict_t se23_ins_fuse_delayed(se23_ins_t *ins, const se23_ins_gnss_t 
             rebase(ins, v);
             fused = 1;
         }
-        (void)se23_ins_step(ins, e->t_ns, &e->s, e->stationary); /* counted live */
+        (void)se23_ins_step(ins, e->t_ns, &e->s, e->rest); /* counted live */
         if ((v == SE23_INS_USED) || (v == SE23_INS_RESET)) {
             keep_apart(ins);
         }

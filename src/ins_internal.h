@@ -49,10 +49,10 @@ int se23_ins_predict(se23_ins_t *ins, const se23_imu_sample_t *s);
 
 /**
  * The whole step of an accepted sample at time t_ns: prediction, then the
- * zero-velocity updates if stationary. Used live and by the replay.
+ * rest updates the detector called for (rest, SE23_INS_REST_*). Used live and by the replay.
  * Returns 1 on success (the state then is at t_ns).
  */
-int se23_ins_step(se23_ins_t *ins, int64_t t_ns, const se23_imu_sample_t *s, int stationary);
+int se23_ins_step(se23_ins_t *ins, int64_t t_ns, const se23_imu_sample_t *s, int rest);
 
 /** Adds an accepted live sample to the preintegrated factor. */
 void se23_ins_factor_add(se23_ins_t *ins, const se23_imu_sample_t *s);
@@ -61,10 +61,11 @@ void se23_ins_factor_add(se23_ins_t *ins, const se23_imu_sample_t *s);
 void se23_ins_factor_reset(se23_ins_t *ins);
 
 /**
- * The zero-velocity (and, with bias states, zero-rate) update after raw
- * sample s. Returns 1 on success.
+ * The zero-velocity update after raw sample s, and the zero-rate update
+ * too if rest is SE23_INS_REST_ZARU (and ZARU configured). Returns 1 on
+ * success.
  */
-int se23_ins_zupt(se23_ins_t *ins, const se23_imu_sample_t *s);
+int se23_ins_zupt(se23_ins_t *ins, const se23_imu_sample_t *s, int rest);
 
 /**
  * Fuses fix now, at the current state (gate, gate recovery, counters,
@@ -80,7 +81,7 @@ void se23_ins_ring_restart(se23_ins_t *ins);
  * Records an accepted sample (after its step) and keeps the snapshots
  * delay_horizon apart. No-op without a delay horizon.
  */
-void se23_ins_ring_push(se23_ins_t *ins, const se23_imu_sample_t *s, int stationary);
+void se23_ins_ring_push(se23_ins_t *ins, const se23_imu_sample_t *s, int rest);
 
 /**
  * Fuses a fix stamped in the past (within the horizon, after the last

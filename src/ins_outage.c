@@ -76,6 +76,7 @@ se23_ins_verdict_t se23_ins_over_gap(se23_ins_t *ins, int64_t t_ns, int64_t seq)
     ins->max_seq = seq;
     if (ins->cfg.zupt != 0) {
         se23_stationary_reset(&ins->det); /* the window would span the outage */
+        ins->rest_ns = 0;
     }
     se23_ins_ring_restart(ins);
     se23_ins_factor_reset(ins);

@@ -15,7 +15,7 @@ int se23_ins_predict(se23_ins_t *ins, const se23_imu_sample_t *s)
     return 1;
 }
 
-int se23_ins_step(se23_ins_t *ins, int64_t t_ns, const se23_imu_sample_t *s, int stationary)
+int se23_ins_step(se23_ins_t *ins, int64_t t_ns, const se23_imu_sample_t *s, int rest)
 {
     if (se23_ins_predict(ins, s) == 0) {
         return 0;
@@ -23,9 +23,9 @@ int se23_ins_step(se23_ins_t *ins, int64_t t_ns, const se23_imu_sample_t *s, int
     ins->t_ns = t_ns;
     ins->last = *s;
     ins->have_last = 1;
-    if (stationary != 0) {
+    if (rest != SE23_INS_REST_NONE) {
         ins->status |= SE23_INS_ST_STATIONARY;
-        (void)se23_ins_zupt(ins, s); /* a failure is counted; the prediction stands */
+        (void)se23_ins_zupt(ins, s, rest); /* a failure is counted; the prediction stands */
     } else {
         ins->status &= ~SE23_INS_ST_STATIONARY;
     }

@@ -25,6 +25,7 @@ H_COMMON := tools/lcm/harness.c tools/lcm/ldmath.c
 H_SIM_SRCS := $(wildcard tools/sim/*.c) $(H_COMMON)
 H_INS_SRCS := $(wildcard tools/ins/*.c) $(H_COMMON) tools/lcm/logfile.c
 H_REPORT_SRCS := $(wildcard tools/report/*.c) $(H_COMMON) tools/lcm/logfile.c
+H_WALK_SRCS := tools/walk/main.c tools/report/logread.c $(H_COMMON) tools/lcm/logfile.c
 H_CORRUPT_SRCS := tools/lcm/corrupt.c tools/lcm/corrupt_framing.c tools/lcm/logfile.c $(H_COMMON)
 H_SIMCHECK_SRCS := tools/lcm/simcheck.c tools/lcm/logfile.c $(H_COMMON)
 H_HDRS := $(wildcard tools/lcm/*.h tools/sim/*.h tools/ins/*.h tools/report/*.h) $(LIB_HDRS)
@@ -34,7 +35,7 @@ h_objs = $(patsubst %.c,$(H)/obj/%.o,$(1))
 .PHONY: harness demo demo-live bench-ins
 
 harness: $(H_BIN)/se23-sim $(H_BIN)/se23-ins $(H_BIN)/se23-report $(H_BIN)/se23-corrupt \
-         $(H_BIN)/se23-simcheck
+         $(H_BIN)/se23-simcheck $(H_BIN)/se23-walk
 
 $(H_GEN)/.stamp: $(LCM_TYPES)
 	@mkdir -p $(H_GEN)
@@ -56,6 +57,9 @@ $(H_BIN)/se23-sim: $(call h_objs,$(H_SIM_SRCS)) $(H)/libse23lcm.a
 	@mkdir -p $(dir $@)
 	$(CC) -o $@ $^ $(LCM_LIBS) -lm
 $(H_BIN)/se23-ins: $(call h_objs,$(H_INS_SRCS)) $(H)/libse23lcm.a $(H_LIB)
+	@mkdir -p $(dir $@)
+	$(CC) -o $@ $^ $(LCM_LIBS) -lm
+$(H_BIN)/se23-walk: $(call h_objs,$(H_WALK_SRCS)) $(H)/libse23lcm.a
 	@mkdir -p $(dir $@)
 	$(CC) -o $@ $^ $(LCM_LIBS) -lm
 $(H_BIN)/se23-report: $(call h_objs,$(H_REPORT_SRCS)) $(H)/libse23lcm.a

@@ -84,9 +84,11 @@
  * also requires the window's mean acceleration R fbar + g to be noise
  * (src/ins.c, at_rest). While the window is stationary, each
  * sample applies v = 0 (nav frame, 1-sigma zupt_sigma_v) and, with bias
- * states, w_meas + b_g = R^T Omega (the Earth rate a body at rest senses;
- * zero on flat Earth; 1-sigma zaru_sigma_w per axis, its O(|Omega| |phi|)
- * dependence on the attitude error neglected). Counted in zupt_used /
+ * states, once the rest has lasted zaru_after seconds, w_meas + b_g =
+ * R^T Omega (the Earth rate a body at rest senses; zero on flat Earth;
+ * 1-sigma zaru_sigma_w per axis, its O(|Omega| |phi|) dependence on the
+ * attitude error neglected). The delay keeps ZARU out of short stances in
+ * which the body still turns (a foot's, 45-70 ms). Counted in zupt_used /
  * zaru_used.
  *
  * Alignment. se23_ins_align starts a static alignment: the readings of
@@ -112,6 +114,8 @@
  *   se23_ins_gnss         one GNSS fix
  *   se23_ins_state        the user's state, covariance, time and status
  *   se23_ins_take_factor  the last finished preintegrated factor
+ *   se23_ins_detector_threshold   the detector threshold for a probability
+ *   se23_ins_preset_foot  the pedestrian (foot-mounted) configuration
  */
 #ifndef SE23_INS_H
 #define SE23_INS_H
@@ -207,6 +211,7 @@ typedef struct {
     se23_stationary_config_t detector; /**< window, noise, threshold (stationary.h) */
     se23_real_t zupt_sigma_v;   /**< 1-sigma of v = 0 at rest [m/s] */
     se23_real_t zaru_sigma_w;   /**< 1-sigma of w = 0 at rest [rad/s] (bias states; 0: no ZARU) */
+    se23_real_t zaru_after;     /**< rest [s] before ZARU applies (0: at once) */
 } se23_ins_config_t;
 
 /** A GNSS fix in the nav frame, stamped with the time it refers to. */
@@ -239,6 +244,13 @@ typedef struct {
     se23_vec3_t sww, sff;     /**< sums of their squares, per axis */
 } se23_ins_align_sums_t;
 
+/** What the detector made of a sample: the updates applied after it. */
+enum {
+    SE23_INS_REST_NONE = 0,  /**< moving */
+    SE23_INS_REST_ZUPT = 1,  /**< stationary: zero velocity */
+    SE23_INS_REST_ZARU = 2   /**< at rest for zaru_after: zero velocity and rate */
+};
+
 /** A stored state for the replay of delayed fixes. */
 typedef struct {
     se23_gauss_t g;           /**< state after the sample at t_ns */
@@ -250,7 +262,7 @@ typedef struct {
 typedef struct {
     se23_imu_sample_t s;
     int64_t t_ns;
-    int stationary;           /**< zero-velocity updates were applied after it */
+    int rest;                 /**< updates applied after it (SE23_INS_REST_*) */
 } se23_ins_hist_t;
 
 /** A finished preintegrated factor. */
@@ -267,6 +279,7 @@ typedef struct {
     se23_gauss_t work;            /**< scratch of the updates (user's coordinates) */
     se23_meas_t meas;             /**< scratch of the updates */
     int64_t half_ns, max_gap_ns, horizon_ns; /**< from cfg: half a sample, max_gap, delay_horizon */
+    int64_t zaru_after_ns;        /**< from cfg: zaru_after */
     int64_t max_missing;          /**< most samples max_gap can hold */
     uint32_t status;              /**< SE23_INS_ST_* bits */
     int64_t t_ns, seq;            /**< time and seq of the last accepted sample */
@@ -291,6 +304,7 @@ typedef struct {
     int snap_old;                 /**< index of the older one */
     /* zero-velocity detection and alignment */
     se23_stationary_t det;
+    int64_t rest_ns;              /**< time the detector has seen rest (0: moving) */
     se23_ins_align_t align;
     se23_ins_align_sums_t sums;
     /* preintegration */
@@ -298,6 +312,26 @@ typedef struct {
     int fac_ready;
     se23_ins_counters_t c;
 } se23_ins_t;
+
+/**
+ * The chi^2_{6W-2} quantile / W of stationary.h for the standard normal
+ * quantile z (Wilson-Hilferty): the detector threshold at which a window at
+ * rest is called moving with the probability 1 - Phi(z).
+ */
+se23_real_t se23_ins_detector_threshold(int window, se23_real_t z);
+
+/**
+ * cfg, align = the pedestrian (foot-mounted) preset for a consumer-MEMS IMU
+ * at rate_hz on a foot, latitude lat (for gravity): flat Earth, 15 states,
+ * ZUPT at stance, ZARU after 0.5 s at rest, alignment from the first
+ * second at rest, no GNSS. Every value and why it was chosen is in
+ * src/ins_preset.c. Pass cfg to se23_ins_setup and align to se23_ins_align.
+ * @return SE23_ERR_NULL; SE23_ERR_DOMAIN unless 50 <= rate_hz <= 10000;
+ *         the statuses of se23_earth_gravity (lat). Nothing is written on
+ *         error.
+ */
+se23_status_t se23_ins_preset_foot(se23_real_t rate_hz, se23_real_t lat,
+                                   se23_ins_config_t *cfg, se23_ins_align_t *align);
 
 /**
  * ins = an empty filter (no state) for cfg.

@@ -30,6 +30,8 @@
 typedef struct {
     const char *in_url;
     const char *out_url;
+    int preset;         /* 0 none, 1 foot */
+    se23_ins_align_t align; /* the preset's alignment request */
     double nav_rate;
     int progress;
     int exit_on_end;
@@ -56,6 +58,10 @@ static void usage(FILE *f)
             "  --out URL             output LCM URL (file://ins.log?mode=w for file\n"
             "                        input, else the input URL)\n"
             "  --imu PROFILE         noise model: perfect|mems|tactical|navigation (mems)\n"
+            "  --preset foot         the library's pedestrian preset (se23_ins_preset_foot:\n"
+            "                        foot-mounted consumer MEMS IMU, ZUPT/ZARU, static\n"
+            "                        alignment at the first rest, no GNSS; replaces the\n"
+            "                        noise, detector and filter options)\n"
             "  --imu-rate HZ         nominal IMU rate (200)\n"
             "  --earth on|off        rotating-Earth model (on)\n"
             "  --lat DEG             latitude of the nav-frame origin (45)\n"
@@ -136,6 +142,11 @@ static void zupt_config(const harness_imu_profile_t *prof, double rate, double l
     }
 }
 
+static int preset_find(const char *name)
+{
+    return strcmp(name, "none") == 0 ? 0 : strcmp(name, "foot") == 0 ? 1 : -1;
+}
+
 static int parse_args(int argc, char **argv, node_opts_t *o, se23_ins_config_t *c)
 {
     const double inf = HUGE_VAL;
@@ -149,6 +160,7 @@ static int parse_args(int argc, char **argv, node_opts_t *o, se23_ins_config_t *
         {"--in", HOPT_STR, &o->in_url, 0, 0, NULL},
         {"--out", HOPT_STR, &o->out_url, 0, 0, NULL},
         {"--imu", HOPT_CHOICE, &profile, 0, 0, harness_imu_profile_find},
+        {"--preset", HOPT_CHOICE, &o->preset, 0, 0, preset_find},
         {"--imu-rate", HOPT_DOUBLE, &rate, 1.0, 1e5, NULL},
         {"--earth", HOPT_CHOICE, &earth, 0, 0, harness_on_off},
         {"--lat", HOPT_DOUBLE, &lat_deg, -90.0, 90.0, NULL},
@@ -171,6 +183,7 @@ static int parse_args(int argc, char **argv, node_opts_t *o, se23_ins_config_t *
     };
     o->in_url = "file://sim.log?speed=0";
     o->out_url = NULL;
+    o->preset = 0;
     o->nav_rate = 50.0;
     o->progress = 0;
     o->exit_on_end = 0;
@@ -219,6 +232,10 @@ static int parse_args(int argc, char **argv, node_opts_t *o, se23_ins_config_t *
     c->preint_window = preint;
     c->zupt = zupt;
     zupt_config(prof, rate, lat_deg * DEG, (int)window, alpha, c);
+    if (o->preset == 1 && se23_ins_preset_foot(rate, lat_deg * DEG, c, &o->align) != SE23_OK) {
+        fprintf(stderr, "se23-ins: --preset foot needs --imu-rate in [50, 10000]\n");
+        return -1;
+    }
     return 0;
 }
 
@@ -274,6 +291,7 @@ static void publish_nav(node_t *nd)
     m.status = (int32_t)nd->ins.status;
     put_counters(nd, &m);
     m.nis_last = nd->ins.nis_last;
+    m.detector_stat = nd->ins.cfg.zupt ? nd->ins.det.stat : 0.0;
     se23lcm_nav_state_publish(nd->out, HARNESS_CH_NAV, &m);
 }
 
@@ -540,6 +558,10 @@ int main(int argc, char **argv)
     if ((st = se23_ins_setup(&cfg, &nd.ins)) != SE23_OK) {
         fprintf(stderr, "se23-ins: invalid configuration (%s%s)\n", se23_status_str(st),
                 st == SE23_ERR_DIM ? ": --delay-horizon too long for the ring at this rate" : "");
+        return 2;
+    }
+    if (nd.o.preset != 0 && se23_ins_align(&nd.ins, &nd.o.align) != SE23_OK) {
+        fprintf(stderr, "se23-ins: the preset's alignment request was refused\n");
         return 2;
     }
     harness_progress_init(&nd.pr);

@@ -1,0 +1,105 @@
+/* Ready-made configurations of the navigation filter; see ins.h,
+ * "Presets". */
+#include "se23/ins.h"
+
+#include "argcheck.h"
+#include "se23/earth.h"
+#include "se23_math.h"
+
+#define DEG (SE23_PI / SE23_R(180))
+
+/* Standard normal quantile at 0.99: a false "moving" verdict in one
+ * window of 100 at rest. */
+#define Z_099 SE23_R(2.3263479)
+
+se23_real_t se23_ins_detector_threshold(int window, se23_real_t z)
+{
+    /* chi^2_{6W-2} quantile / W (stationary.h), Wilson-Hilferty */
+    const se23_real_t k = (SE23_R(6) * (se23_real_t)window) - SE23_R(2);
+    const se23_real_t c = SE23_R(2) / (SE23_R(9) * k);
+    const se23_real_t h = (SE23_R(1) - c) + (z * se23_sqrt(c));
+    return (k * h * h * h) / (se23_real_t)window;
+}
+
+se23_status_t se23_ins_preset_foot(se23_real_t rate_hz, se23_real_t lat,
+                                   se23_ins_config_t *cfg, se23_ins_align_t *align)
+{
+    const se23_ins_config_t none = {0};
+    const se23_ins_align_t no_align = {0};
+    se23_ins_config_t c = none;
+    se23_ins_align_t a = no_align;
+    se23_real_t g = SE23_R(0);
+    se23_status_t st;
+    SE23_CHECK_NOT_NULL(cfg);
+    SE23_CHECK_NOT_NULL(align);
+    if (!((rate_hz >= SE23_R(50)) && (rate_hz <= SE23_R(10000)))) {
+        return SE23_ERR_DOMAIN;
+    }
+    st = se23_earth_gravity(lat, SE23_R(0), &g);
+    if (st != SE23_OK) {
+        return st;
+    }
+    /* The sensor: consumer MEMS class data-sheet values (e.g. the
+     * Bosch BMI160 / TDK ICM-20602 class an NGIMU-like unit carries):
+     * gyro 0.007 deg/s/sqrt(Hz), accelerometer 180 ug/sqrt(Hz), in-run
+     * bias walks of a few deg/h and mg over a minute, range 2000 deg/s
+     * and 16 g. Flat Earth: the Earth rate (0.004 deg/s) is below the
+     * gyro's noise over a walk. */
+    c.noise.gyro_noise = SE23_R(0.007) * DEG;
+    c.noise.accel_noise = SE23_R(180e-6) * SE23_R(9.80665);
+    c.noise.gyro_walk = SE23_R(1e-5);
+    c.noise.accel_walk = SE23_R(1e-4);
+    c.gyro_range = SE23_R(2000) * DEG;
+    c.accel_range = SE23_R(16) * SE23_R(9.80665);
+    c.lat = lat;
+    c.earth_rotation = 0;
+    c.bias_states = 1;
+    c.dt_nominal = SE23_R(1) / rate_hz;
+    c.max_gap = SE23_R(0.05);   /* a lost sample or twenty, not a swing */
+    c.max_outage = SE23_R(1);
+    c.outage_accel = SE23_R(10); /* a swinging foot: ~1 g, ~5 rad/s */
+    c.outage_rate = SE23_R(5);
+    c.gnss_gate = SE23_R(0);
+    /* The detector: a window of 12.5 ms, a quarter of the shortest stance
+     * (45-70 ms), so that every stance holds windows wholly inside it. Its
+     * sigmas are not the sensor noise but what a foot in stance still
+     * shows: it turns at 7-13 deg/s (sigma_g 10 deg/s) and its specific
+     * force ripples by a few percent of g (sigma_a 0.3 m/s^2); the
+     * threshold is the chi^2_{6W-2} quantile for one false "moving" window
+     * in 100 at that level of motion. */
+    c.zupt = 1;
+    {
+        const se23_real_t w = (SE23_R(0.0125) * rate_hz) + SE23_R(0.5);
+        c.detector.window = (int)w;
+    }
+    if (c.detector.window < 2) {
+        c.detector.window = 2;
+    } else if (c.detector.window > SE23_STATIONARY_WMAX) {
+        c.detector.window = SE23_STATIONARY_WMAX; /* above 2.6 kHz: shorter than 12.5 ms */
+    } else {
+        /* 12.5 ms */
+    }
+    c.detector.sigma_a = SE23_R(0.3);
+    c.detector.sigma_g = SE23_R(10) * DEG;
+    c.detector.gravity = g;
+    c.detector.threshold = se23_ins_detector_threshold(c.detector.window, Z_099);
+    /* v = 0 to 2 cm/s: a foot turning at 10 deg/s about a contact point
+     * ~0.1 m from the sensor. ZARU at the gyro's noise, once the foot has
+     * rested 0.5 s (7x the longest stance): in a stance it still turns. */
+    c.zupt_sigma_v = SE23_R(0.02);
+    c.zaru_sigma_w = c.noise.gyro_noise * se23_sqrt(rate_hz);
+    c.zaru_after = SE23_R(0.5);
+    /* Alignment: the first second at rest; the start defines the frame
+     * (position 0, heading 0: no magnetometer, no GNSS). Turn-on biases
+     * of the class: 1 deg/s, 5 mg. */
+    a.sigma_p = SE23_R(1e-3);
+    a.yaw = SE23_R(0);
+    a.sigma_yaw = SE23_R(1e-3);
+    a.sigma_v = SE23_R(0.01);
+    a.sigma_bg = DEG;
+    a.sigma_ba = SE23_R(5e-3) * SE23_R(9.80665);
+    a.duration = SE23_R(1);
+    *cfg = c;
+    *align = a;
+    return SE23_OK;
+}
