@@ -35,7 +35,7 @@ h_objs = $(patsubst %.c,$(H)/obj/%.o,$(1))
 .PHONY: harness demo demo-live bench-ins
 
 harness: $(H_BIN)/se23-sim $(H_BIN)/se23-ins $(H_BIN)/se23-report $(H_BIN)/se23-corrupt \
-         $(H_BIN)/se23-simcheck $(H_BIN)/se23-walk
+         $(H_BIN)/se23-simcheck $(H_BIN)/se23-walk $(H_BIN)/se23-ins-float
 
 $(H_GEN)/.stamp: $(LCM_TYPES)
 	@mkdir -p $(H_GEN)
@@ -48,6 +48,16 @@ $(H)/gen-obj/%.o: $(H_GEN)/%.c $(H_GEN)/.stamp
 	$(CC) $(H_GEN_CFLAGS) -c $< -o $@
 $(H)/libse23lcm.a: $(patsubst $(H_GEN)/%.c,$(H)/gen-obj/%.o,$(LCM_GEN_C))
 	rm -f $@ && ar rcs $@ $^
+
+# se23-ins once more on the float library (the Cortex-M4F precision), for
+# the float figures of make demo-walk.
+$(H)/obj-float/%.o: %.c $(H_HDRS) $(H_GEN)/.stamp
+	@mkdir -p $(dir $@)
+	$(CC) $(H_CFLAGS) -DSE23_CFG_DOUBLE=0 -c $< -o $@
+$(H_BIN)/se23-ins-float: $(patsubst %.c,$(H)/obj-float/%.o,$(H_INS_SRCS)) $(H)/libse23lcm.a \
+                         $(BUILD)/lib-host-float/libse23.a
+	@mkdir -p $(dir $@)
+	$(CC) -o $@ $^ $(LCM_LIBS) -lm
 
 $(H)/obj/%.o: %.c $(H_HDRS) $(H_GEN)/.stamp
 	@mkdir -p $(dir $@)

@@ -67,11 +67,11 @@
  * any fix within the horizon has a snapshot before it. Fusing a fix stamped
  * d seconds late costs the replay of up to d + delay_horizon seconds of
  * samples (prediction and the zero-velocity updates), in that call.
- * Memory: sizeof(se23_ins_t), about 3 se23_gauss_t (1.9 kB in double, 0.95
- * kB in float each) plus SE23_INS_RING samples of 72 B (double) / 44 B
- * (float), plus the detector window (README "The navigation filter"); the
- * ring must hold 2 * delay_horizon / dt_nominal + 2 samples (checked by
- * se23_ins_setup). A fix replayed this way equals the same fix applied at
+ * Memory: sizeof(se23_ins_t) = 15,840 B + SE23_INS_RING x 72 B in double,
+ * 8,136 B + SE23_INS_RING x 48 B in float (25,056 / 14,280 B with the
+ * default ring; README "The navigation filter"); the ring must hold
+ * 2 * delay_horizon / dt_nominal + 2 samples (checked by se23_ins_setup).
+ * A fix replayed this way equals the same fix applied at
  * its own time (same operations, same order).
  *
  * Zero-velocity updates. With zupt enabled the detector of stationary.h
