@@ -144,6 +144,7 @@ void se23_ins_start(se23_ins_t *ins, int64_t t_ns, const se23_gauss_t *g)
     ins->max_seq = -1;
     ins->have_last = 0;
     ins->streak = 0;
+    ins->back_streak = 0;
     ins->have_pending = 0;
     ins->last_fix_ns = -1;
     ins->gated_run = 0;
@@ -155,6 +156,20 @@ void se23_ins_start(se23_ins_t *ins, int64_t t_ns, const se23_gauss_t *g)
     ins->rest_ns = 0;
     se23_ins_ring_restart(ins);
     se23_ins_factor_reset(ins);
+}
+
+/* The largest diagonal entry of g's covariance (checked finite). */
+static se23_real_t p_diag_max(const se23_gauss_t *g)
+{
+    se23_real_t m = SE23_R(0);
+    int i;
+    for (i = 0; i < g->n; ++i) {
+        const se23_real_t d = g->P.m[se23_ins_idx(i, i)];
+        if (d > m) {
+            m = d;
+        }
+    }
+    return m;
 }
 
 se23_status_t se23_ins_init(se23_ins_t *ins, int64_t t_ns, const se23_gauss_t *g)
@@ -174,6 +189,9 @@ se23_status_t se23_ins_init(se23_ins_t *ins, int64_t t_ns, const se23_gauss_t *g
         st = SE23_ERR_DT;
     } else {
         st = se23_gauss_check(g);
+    }
+    if ((st == SE23_OK) && (p_diag_max(g) > SE23_INS_P_MAX)) {
+        st = SE23_ERR_DOMAIN; /* an uncertainty no step could carry without overflow */
     }
     if (st == SE23_OK) {
         st = se23_gauss_to_carried(&ins->model, g, &ins->work);
@@ -213,8 +231,9 @@ int se23_ins_take_factor(se23_ins_t *ins, se23_ins_factor_t *out)
 }
 
 /* Seq bookkeeping of a received sample (seq >= 0): losses in transit, or a
- * jump too large to be one. */
-static void count_missing(se23_ins_t *ins, int64_t seq)
+ * jump too large to be one; an over-gap sample's large jump is left to the
+ * outage logic (over_gap nonzero). */
+static void count_missing(se23_ins_t *ins, int64_t seq, int over_gap)
 {
     if (ins->max_seq < 0) {
         ins->max_seq = seq;
@@ -223,17 +242,57 @@ static void count_missing(se23_ins_t *ins, int64_t seq)
         if (lost <= ins->max_missing) {
             se23_ins_count_add(&ins->c.imu_missing, lost);
             ins->max_seq = seq;
-        } else {
+        } else if (over_gap == 0) {
             se23_ins_count(&ins->c.imu_seq_jumps);
+        } else {
+            /* maybe an outage: judged when it is confirmed */
         }
     } else {
         /* an old or repeated seq: judged by the time screening */
     }
 }
 
+/*
+ * A clock that stepped back and stays there: SE23_INS_OUTAGE_CONFIRM
+ * consecutive bad-time samples that agree among themselves (consecutive
+ * seq, 0 < dt <= max_gap between them) re-base the filter's time on the
+ * new clock. The interval between the last good sample and the step is
+ * unknown: the state is kept as it is (the few samples of the streak are
+ * lost), the rest bookkeeping starts again, status DEGRADED until a fix.
+ * Returns 1 if this sample confirmed the step.
+ */
+static int clock_stepped_back(se23_ins_t *ins, int64_t t_ns, int64_t seq)
+{
+    if (!((ins->back_streak > 0) && (t_ns > ins->back_t_ns) &&
+          (t_ns - ins->back_t_ns <= ins->max_gap_ns) && (seq - 1 == ins->back_seq))) {
+        ins->back_streak = 0;
+    }
+    ins->back_streak++;
+    ins->back_t_ns = t_ns;
+    ins->back_seq = seq;
+    if (ins->back_streak < SE23_INS_OUTAGE_CONFIRM) {
+        return 0;
+    }
+    ins->back_streak = 0;
+    se23_ins_count(&ins->c.time_resets);
+    ins->t_ns = t_ns;
+    ins->seq = seq;
+    ins->max_seq = seq;
+    ins->last_fix_ns = -1;
+    ins->have_pending = 0;
+    ins->status |= SE23_INS_ST_DEGRADED;
+    if (ins->cfg.zupt != 0) {
+        se23_stationary_reset(&ins->det);
+    }
+    ins->rest_ns = 0;
+    se23_ins_ring_restart(ins);
+    se23_ins_factor_reset(ins);
+    return 1;
+}
+
 /* The screening verdict of a finite, in-range sample that is not after the
  * last accepted one. */
-static se23_ins_verdict_t not_after(se23_ins_t *ins, int64_t seq)
+static se23_ins_verdict_t not_after(se23_ins_t *ins, int64_t t_ns, int64_t seq)
 {
     if ((ins->have_last != 0) && (seq == ins->seq)) {
         se23_ins_count(&ins->c.imu_duplicate);
@@ -244,7 +303,7 @@ static se23_ins_verdict_t not_after(se23_ins_t *ins, int64_t seq)
         return SE23_INS_OUT_OF_ORDER;
     }
     se23_ins_count(&ins->c.imu_bad_time);
-    return SE23_INS_BAD_TIME;
+    return (clock_stepped_back(ins, t_ns, seq) != 0) ? SE23_INS_OUTAGE : SE23_INS_BAD_TIME;
 }
 
 /* A pending fix whose time the state has reached is fused. */
@@ -391,8 +450,16 @@ se23_ins_verdict_t se23_ins_imu(se23_ins_t *ins, int64_t t_ns, int64_t seq,
         se23_ins_count(&ins->c.imu_early);
         return SE23_INS_EARLY;
     }
-    if ((se23_all_finite(w_b->v, 3) == 0) || (se23_all_finite(f_b->v, 3) == 0) || (t_ns < 0) ||
-        (seq < 0)) {
+    if ((seq >= 0) && ((ins->status & SE23_INS_ST_ALIGNING) == 0U)) {
+        /* every received sample's seq counts, whatever its verdict
+         * (ins->t_ns >= 0: t_ns - ins->t_ns cannot overflow) */
+        count_missing(ins, seq, (t_ns > ins->t_ns) && (t_ns - ins->t_ns > ins->max_gap_ns));
+    }
+    if ((t_ns < 0) || (seq < 0)) {
+        se23_ins_count(&ins->c.imu_bad_time); /* outside the clock's domain */
+        return SE23_INS_BAD_TIME;
+    }
+    if ((se23_all_finite(w_b->v, 3) == 0) || (se23_all_finite(f_b->v, 3) == 0)) {
         se23_ins_count(&ins->c.imu_nonfinite);
         return SE23_INS_NONFINITE;
     }
@@ -408,11 +475,11 @@ se23_ins_verdict_t se23_ins_imu(se23_ins_t *ins, int64_t t_ns, int64_t seq,
         se23_ins_count(&ins->c.imu_align);
         return se23_ins_align_sample(ins, t_ns, &s);
     }
-    count_missing(ins, seq);
     if (t_ns <= ins->t_ns) {
-        return not_after(ins, seq);
+        return not_after(ins, t_ns, seq);
     }
-    if (t_ns - ins->t_ns > ins->max_gap_ns) { /* both >= 0: no overflow */
+    ins->back_streak = 0;
+    if (t_ns - ins->t_ns > ins->max_gap_ns) {
         return se23_ins_over_gap(ins, t_ns, seq);
     }
     {

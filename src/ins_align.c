@@ -23,7 +23,9 @@ static se23_status_t align_check(const se23_ins_t *ins, const se23_ins_align_t *
                ((a->gyrocompass == 0) && (a->sigma_yaw <= SE23_R(0))) ||
                ((bias != 0) && ((a->sigma_bg <= SE23_R(0)) || (a->sigma_ba <= SE23_R(0)))) ||
                (a->sigma_ba < SE23_R(0)) || (a->duration < SE23_R(0)) ||
-               (a->duration > SE23_INS_MAX_OUTAGE)) {
+               (a->duration > SE23_INS_MAX_OUTAGE) || (a->sigma_p > SE23_R(1e6)) ||
+               (a->sigma_v > SE23_R(1e6)) || (a->sigma_yaw > SE23_R(1e6)) ||
+               (a->sigma_bg > SE23_R(1e6)) || (a->sigma_ba > SE23_R(1e6))) {
         st = SE23_ERR_DOMAIN;
     } else {
         /* usable */

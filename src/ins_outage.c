@@ -43,6 +43,26 @@ static void carry_across(se23_ins_t *ins, se23_real_t gap)
     }
 }
 
+/*
+ * The seq numbers the outage skipped, before the streak that confirmed it
+ * (seq its last): lost samples if the time gap could hold them, else a
+ * corrupted seq.
+ */
+static void count_lost(se23_ins_t *ins, int64_t t_ns, int64_t seq)
+{
+    const int64_t first = seq - (SE23_INS_OUTAGE_CONFIRM - 1);
+    const int64_t dt_ns = (2 * ins->half_ns > 0) ? (2 * ins->half_ns) : 1;
+    const int64_t room = ((t_ns - ins->t_ns) / dt_ns) + ins->max_missing;
+    if ((ins->max_seq < 0) || (first <= ins->max_seq)) {
+        return; /* no reference, or no seq skipped */
+    }
+    if (first - ins->max_seq - 1 <= room) {
+        se23_ins_count_add(&ins->c.imu_missing, first - ins->max_seq - 1);
+    } else {
+        se23_ins_count(&ins->c.imu_seq_jumps);
+    }
+}
+
 se23_ins_verdict_t se23_ins_over_gap(se23_ins_t *ins, int64_t t_ns, int64_t seq)
 {
     /* t_ns, seq >= 0 (screened): the differences cannot overflow. */
@@ -71,6 +91,7 @@ se23_ins_verdict_t se23_ins_over_gap(se23_ins_t *ins, int64_t t_ns, int64_t seq)
         return SE23_INS_OUTAGE;
     }
     carry_across(ins, gap);
+    count_lost(ins, t_ns, seq);
     ins->t_ns = t_ns;
     ins->seq = seq;
     ins->max_seq = seq;

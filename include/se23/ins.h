@@ -22,17 +22,20 @@
  * its own counter and leaves the state untouched (se23_ins_imu returns the
  * verdict):
  *   no state yet (not initialised)            -> imu_early
- *   NaN/Inf in a reading, t < 0 or seq < 0    -> imu_nonfinite
+ *   NaN/Inf in a reading                      -> imu_nonfinite
+ *   t < 0 or seq < 0                          -> imu_bad_time
  *   |w| or |f| beyond the configured range    -> imu_range
  *   t <= t_last and seq == last               -> imu_duplicate
  *   t <= t_last and seq <  last               -> imu_out_of_order
- *   t <= t_last otherwise                     -> imu_bad_time
+ *   t <= t_last otherwise                     -> imu_bad_time (see "Clock")
  *   dt > max_gap                              -> imu_bad_dt (see "Outage")
  * While aligning, a finite in-range sample goes to the alignment (imu_align).
- * A received sample whose seq exceeds the highest seen by k + 1 adds k to
- * imu_missing, provided k is no more than the samples max_gap can hold
- * (a larger jump is a corrupted seq, counted in imu_seq_jumps, or a real
- * outage, confirmed below).
+ * A received sample (whatever its verdict) within max_gap of the last
+ * whose seq exceeds the highest seen by
+ * k + 1 adds k to imu_missing, provided k is no more than the samples
+ * max_gap can hold (a larger jump is a corrupted seq: imu_seq_jumps); an
+ * over-gap sample's seq is judged when an outage is confirmed (the seq
+ * skipped before it are lost samples if the time gap could hold them).
  *
  * Outage. When SE23_INS_OUTAGE_CONFIRM consecutive samples all have
  * dt > max_gap but agree among themselves (consecutive seq, dt <= max_gap
@@ -43,6 +46,12 @@
  * time_resets counts it; status SE23_INS_ST_DEGRADED until the next fix.
  * A longer outage sets SE23_INS_ST_LOST: the filter then waits for a new
  * init or alignment.
+ *
+ * Clock. SE23_INS_OUTAGE_CONFIRM consecutive bad-time samples that agree
+ * among themselves (consecutive seq, 0 < dt <= max_gap between them) mean
+ * the clock stepped back and stays there: the filter re-bases its time on
+ * the new clock (time_resets, status DEGRADED, verdict SE23_INS_OUTAGE),
+ * keeping the state; fixes are then judged by the new clock.
  *
  * GNSS. A fix (position, optionally velocity, of an antenna at lever arm
  * l_b: h = p + R l and v + R (w x l), kalman.h) is fused at its own time:
@@ -68,7 +77,7 @@
  * d seconds late costs the replay of up to d + delay_horizon seconds of
  * samples (prediction and the zero-velocity updates), in that call.
  * Memory: sizeof(se23_ins_t) = 15,840 B + SE23_INS_RING x 72 B in double,
- * 8,136 B + SE23_INS_RING x 48 B in float (25,056 / 14,280 B with the
+ * 8,128 B + SE23_INS_RING x 48 B in float (25,056 / 14,272 B with the
  * default ring; README "The navigation filter"); the ring must hold
  * 2 * delay_horizon / dt_nominal + 2 samples (checked by se23_ins_setup).
  * A fix replayed this way equals the same fix applied at
@@ -141,6 +150,10 @@ extern "C" {
 /** Consecutive consistent over-gap samples that confirm an outage. */
 #define SE23_INS_OUTAGE_CONFIRM 3
 
+/** Largest variance of an initial state, in any unit (a 1-sigma of 1e6 m,
+ *  m/s, rad or rad/s): beyond it, steps would overflow. */
+#define SE23_INS_P_MAX SE23_R(1e12)
+
 /** Largest outage a configuration may ask to carry across [s]. */
 #define SE23_INS_MAX_OUTAGE SE23_R(600)
 
@@ -159,11 +172,11 @@ extern "C" {
 typedef enum {
     SE23_INS_USED = 0,         /**< integrated (sample) or fused (fix) */
     SE23_INS_EARLY = 1,        /**< no state yet */
-    SE23_INS_NONFINITE = 2,    /**< NaN/Inf, negative time or seq, bad sigma */
+    SE23_INS_NONFINITE = 2,    /**< NaN/Inf, or a fix's bad sigma or negative time */
     SE23_INS_RANGE = 3,        /**< beyond the sensor range */
     SE23_INS_DUPLICATE = 4,    /**< same seq as the last sample */
     SE23_INS_OUT_OF_ORDER = 5, /**< older seq */
-    SE23_INS_BAD_TIME = 6,     /**< not after the last sample */
+    SE23_INS_BAD_TIME = 6,     /**< not after the last sample, or t < 0, seq < 0 */
     SE23_INS_BAD_DT = 7,       /**< interval above max_gap (maybe an outage) */
     SE23_INS_OUTAGE = 8,       /**< confirmed an outage: carried across */
     SE23_INS_PENDING = 9,      /**< fix ahead of the state: held */
@@ -271,46 +284,48 @@ typedef struct {
     int64_t t0_ns, t1_ns, seq0;
 } se23_ins_factor_t;
 
-/** The filter (caller-owned; fields are read-only for the caller). */
+/** The filter (caller-owned; fields are read-only for the caller). Fields
+ *  ordered by alignment (no padding in either precision). */
 typedef struct {
-    se23_ins_config_t cfg;
-    se23_earth_model_t model;
-    se23_gauss_t g;               /**< state in the model's coordinates */
-    se23_gauss_t work;            /**< scratch of the updates (user's coordinates) */
-    se23_meas_t meas;             /**< scratch of the updates */
-    int64_t half_ns, max_gap_ns, horizon_ns; /**< from cfg: half a sample, max_gap, delay_horizon */
-    int64_t zaru_after_ns;        /**< from cfg: zaru_after */
+    /* from cfg */
+    int64_t half_ns, max_gap_ns, horizon_ns; /**< half a sample, max_gap, delay_horizon */
+    int64_t zaru_after_ns;        /**< zaru_after */
     int64_t max_missing;          /**< most samples max_gap can hold */
-    uint32_t status;              /**< SE23_INS_ST_* bits */
+    /* time and sequence */
     int64_t t_ns, seq;            /**< time and seq of the last accepted sample */
     int64_t max_seq;              /**< highest seq received since init */
-    se23_imu_sample_t last;       /**< last accepted sample (raw), for holds */
-    int have_last;
-    /* outage detection */
-    int streak;
-    int64_t streak_t_ns, streak_seq;
-    /* GNSS */
-    se23_ins_gnss_t pending;
-    int have_pending;
+    int64_t streak_t_ns, streak_seq; /**< outage detection */
+    int64_t back_t_ns, back_seq;  /**< clock-step detection */
     int64_t last_fix_ns;          /**< time of the last fused fix (-1: none) */
+    int64_t rest_ns;              /**< time the detector has seen rest (0: moving) */
+    /* structures holding int64 */
+    se23_ins_gnss_t pending;      /**< a fix ahead of the state */
+    se23_ins_factor_t fac, fac_out; /**< preintegration */
+    se23_ins_snapshot_t snap[2];  /**< delayed fixes: the snapshots */
+    se23_ins_hist_t ring[SE23_INS_RING]; /**< and the samples since the older */
+    /* 4-byte fields */
+    uint32_t status;              /**< SE23_INS_ST_* bits */
+    int have_last;
+    int streak, back_streak;
+    int have_pending;
     int gated_run;                /**< consecutive gated fixes */
     se23_real_t nis_last;
-    /* delayed fixes */
-    se23_ins_hist_t ring[SE23_INS_RING];
     int ring_head, ring_count;    /**< oldest entry, number of entries */
     int replaying;                /**< nonzero inside a replay (counters not repeated) */
-    se23_ins_snapshot_t snap[2];
     int n_snap;                   /**< snapshots held */
     int snap_old;                 /**< index of the older one */
-    /* zero-velocity detection and alignment */
-    se23_stationary_t det;
-    int64_t rest_ns;              /**< time the detector has seen rest (0: moving) */
+    int fac_ready;
+    /* structures of se23_real_t */
+    se23_imu_sample_t last;       /**< last accepted sample (raw), for holds */
     se23_ins_align_t align;
     se23_ins_align_sums_t sums;
-    /* preintegration */
-    se23_ins_factor_t fac, fac_out;
-    int fac_ready;
+    se23_earth_model_t model;
     se23_ins_counters_t c;
+    se23_ins_config_t cfg;
+    se23_stationary_t det;
+    se23_meas_t meas;             /**< scratch of the updates */
+    se23_gauss_t g;               /**< state in the model's coordinates */
+    se23_gauss_t work;            /**< scratch of the updates (user's coordinates) */
 } se23_ins_t;
 
 /**
@@ -351,16 +366,18 @@ se23_status_t se23_ins_setup(const se23_ins_config_t *cfg, se23_ins_t *ins);
  * biases, covariance; g->n must be 15 with bias states, else 9), checked
  * here with se23_gauss_check: the one deep check it gets.
  * @return SE23_ERR_NULL, SE23_ERR_DIM (n), SE23_ERR_DT (t_ns < 0), the
- *         statuses of se23_gauss_check; on error the filter is unchanged
- *         but for init_rejected.
+ *         statuses of se23_gauss_check, SE23_ERR_DOMAIN (a variance above
+ *         SE23_INS_P_MAX); on error the filter is unchanged but for
+ *         init_rejected.
  */
 se23_status_t se23_ins_init(se23_ins_t *ins, int64_t t_ns, const se23_gauss_t *g);
 
 /**
- * Starts a static alignment (file comment): the state is set at the end
- * of the first stationary detector window.
+ * Starts a static alignment (file comment): the state is set once the
+ * detector has seen a->duration seconds (at least a window) of rest.
  * @return SE23_ERR_NULL; SE23_ERR_DOMAIN (detector off in the
- *         configuration, gyrocompass on flat Earth, a sigma <= 0);
+ *         configuration, gyrocompass on flat Earth, a sigma <= 0 or above
+ *         1e6, duration < 0 or above SE23_INS_MAX_OUTAGE);
  *         SE23_ERR_NONFINITE; on error the filter is unchanged but for
  *         init_rejected.
  */

@@ -100,12 +100,69 @@ static void test_outage_beyond_the_limit_loses_the_state(void **state)
     assert_int_equal(sample(years + 4 * IT_DT_NS, 5), SE23_INS_USED);
 }
 
+/* A clock that steps back by an hour and stays there is re-based on; a
+ * single stale timestamp, or stale ones out of sequence, are not. */
+static void test_clock_stepped_back_is_recovered(void **state)
+{
+    (void)state;
+    const long long t0 = 3700000000000LL; /* the clock will step back by 1 h */
+    se23_ins_config_t c;
+    se23_gauss_t g;
+    it_config(&c, 1);
+    c.zupt = 0;
+    assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
+    it_initial(15, 1e-3, 0.01, 0.1, &g);
+    assert_int_equal(se23_ins_init(&ins, t0, &g), SE23_OK);
+    assert_int_equal(it_run_rest(&ins, NULL, NULL, t0, 0, 100), 100);
+    {
+        const long long tb = t0 + 100 * IT_DT_NS - 3600000000000LL;
+        /* one stale sample, then the stream goes on: no step */
+        assert_int_equal(sample(tb, 101), SE23_INS_BAD_TIME);
+        assert_int_equal(sample(t0 + 101 * IT_DT_NS, 102), SE23_INS_USED);
+        /* stale samples out of sequence: no step */
+        assert_int_equal(sample(tb, 103), SE23_INS_BAD_TIME);
+        assert_int_equal(sample(tb + IT_DT_NS, 105), SE23_INS_BAD_TIME);
+        assert_int_equal(sample(tb + 2 * IT_DT_NS, 107), SE23_INS_BAD_TIME);
+        assert_int_equal(ins.c.time_resets, 0);
+        /* the clock really stepped back: consecutive and consistent */
+        assert_int_equal(sample(tb + 10 * IT_DT_NS, 110), SE23_INS_BAD_TIME);
+        assert_int_equal(sample(tb + 11 * IT_DT_NS, 111), SE23_INS_BAD_TIME);
+        assert_int_equal(sample(tb + 12 * IT_DT_NS, 112), SE23_INS_OUTAGE);
+        assert_int_equal(ins.c.time_resets, 1);
+        assert_true((ins.status & SE23_INS_ST_DEGRADED) != 0);
+        assert_int_equal(ins.t_ns, tb + 12 * IT_DT_NS);
+        for (int k = 13; k < 40; ++k) {
+            assert_int_equal(sample(tb + k * IT_DT_NS, 100 + k), SE23_INS_USED);
+        }
+        assert_int_equal(ins.c.imu_bad_time, 7);
+        assert_int_equal(se23_gauss_check(&ins.g), SE23_OK);
+    }
+}
+
+/* An initial covariance no step could carry is refused where it enters. */
+static void test_huge_initial_covariance_is_refused(void **state)
+{
+    (void)state;
+    se23_ins_config_t c;
+    se23_gauss_t g;
+    it_config(&c, 1);
+    assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
+    it_initial(15, 1e-3, 0.01, 1e10, &g); /* variance 1e20: finite, valid, useless */
+    assert_int_equal(se23_ins_init(&ins, 0, &g), SE23_ERR_DOMAIN);
+    it_initial(15, 1e-3, 0.01, 1e6, &g); /* the limit: variance 1e12 */
+    assert_int_equal(se23_ins_init(&ins, 0, &g), SE23_OK);
+    it_initial(15, 1e-3, 0.01, 1.01e6, &g);
+    assert_int_equal(se23_ins_init(&ins, 0, &g), SE23_ERR_DOMAIN);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_outage_confirmed_and_carried_across),
         cmocka_unit_test(test_inconsistent_over_gap_samples_never_confirm),
         cmocka_unit_test(test_outage_beyond_the_limit_loses_the_state),
+        cmocka_unit_test(test_clock_stepped_back_is_recovered),
+        cmocka_unit_test(test_huge_initial_covariance_is_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

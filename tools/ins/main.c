@@ -479,6 +479,9 @@ static void summary(const node_t *nd, int64_t skipped, double cpu_s)
     for (k = 0; k < sizeof rows / sizeof rows[0]; k++) {
         printf("  %-20s %lld\n", rows[k].name, (long long)rows[k].n);
     }
+    printf("  %-20s %lld\n", "gnss_rejected",
+           (long long)c->gnss_early + c->gnss_nonfinite + c->gnss_stale + c->gnss_gated +
+               c->gnss_pending_dropped);
     printf("  %-20s %lld\n", "decode_errors", (long long)nd->decode_errors);
     printf("  %-20s %lld\n", "log_skipped_bytes", (long long)skipped);
     printf("  %-20s 0x%03x\n", "status", (unsigned)nd->ins.status);
