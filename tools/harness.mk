@@ -1,7 +1,8 @@
 # se23 LCM harness (tools/lcm, tools/sim, tools/ins, tools/report).
 # Included by the top-level Makefile (BUILD, CC, WARN, JOBS come from there).
 #
-#   make harness     se23-sim, se23-ins, se23-report, se23-corrupt, se23-simcheck
+#   make harness     se23-sim, se23-ins, se23-report, se23-corrupt, se23-simcheck,
+#                    se23-import (CSV IMU log -> LCM log), se23-importcheck
 #   make demo        60 s UAV flight, MEMS IMU 200 Hz, Earth rotation, GNSS 5 Hz,
 #                    sim -> LCM -> se23-ins -> LCM -> report + plots
 #   make demo-live   the same over udpm:// in a private network namespace
@@ -28,14 +29,19 @@ H_REPORT_SRCS := $(wildcard tools/report/*.c) $(H_COMMON) tools/lcm/logfile.c
 H_WALK_SRCS := tools/walk/main.c tools/report/logread.c $(H_COMMON) tools/lcm/logfile.c
 H_CORRUPT_SRCS := tools/lcm/corrupt.c tools/lcm/corrupt_framing.c tools/lcm/logfile.c $(H_COMMON)
 H_SIMCHECK_SRCS := tools/lcm/simcheck.c tools/lcm/logfile.c $(H_COMMON)
-H_HDRS := $(wildcard tools/lcm/*.h tools/sim/*.h tools/ins/*.h tools/report/*.h) $(LIB_HDRS)
+H_IMPORT_SRCS := tools/import/main.c tools/import/csv.c tools/import/row.c \
+                 tools/import/hygiene.c $(H_COMMON)
+H_IMPORTCHECK_SRCS := tools/import/check.c tools/lcm/logfile.c $(H_COMMON)
+H_HDRS := $(wildcard tools/lcm/*.h tools/sim/*.h tools/ins/*.h tools/report/*.h \
+                     tools/import/*.h) $(LIB_HDRS)
 H_LIB := $(BUILD)/lib-host-double/libse23.a
 h_objs = $(patsubst %.c,$(H)/obj/%.o,$(1))
 
 .PHONY: harness demo demo-live bench-ins
 
 harness: $(H_BIN)/se23-sim $(H_BIN)/se23-ins $(H_BIN)/se23-report $(H_BIN)/se23-corrupt \
-         $(H_BIN)/se23-simcheck $(H_BIN)/se23-walk $(H_BIN)/se23-ins-float
+         $(H_BIN)/se23-simcheck $(H_BIN)/se23-walk $(H_BIN)/se23-ins-float \
+         $(H_BIN)/se23-import $(H_BIN)/se23-importcheck
 
 $(H_GEN)/.stamp: $(LCM_TYPES)
 	@mkdir -p $(H_GEN)
@@ -79,6 +85,12 @@ $(H_BIN)/se23-corrupt: $(call h_objs,$(H_CORRUPT_SRCS)) $(H)/libse23lcm.a
 	@mkdir -p $(dir $@)
 	$(CC) -o $@ $^ $(LCM_LIBS) -lm
 $(H_BIN)/se23-simcheck: $(call h_objs,$(H_SIMCHECK_SRCS)) $(H)/libse23lcm.a
+	@mkdir -p $(dir $@)
+	$(CC) -o $@ $^ $(LCM_LIBS) -lm
+$(H_BIN)/se23-import: $(call h_objs,$(H_IMPORT_SRCS)) $(H)/libse23lcm.a
+	@mkdir -p $(dir $@)
+	$(CC) -o $@ $^ $(LCM_LIBS) -lm
+$(H_BIN)/se23-importcheck: $(call h_objs,$(H_IMPORTCHECK_SRCS)) $(H)/libse23lcm.a
 	@mkdir -p $(dir $@)
 	$(CC) -o $@ $^ $(LCM_LIBS) -lm
 

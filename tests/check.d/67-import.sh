@@ -1,0 +1,314 @@
+# se23-import (tools/import/): hostile CSV IMU logs, each written here into
+# $BUILD/check/import/ and imported under valgrind (LCM's own leak
+# suppressed, as in 60-harness.sh): the exit status, the counters of the
+# summary and the line-numbered messages must be as expected, and every
+# row accounted for (rows = written + repeated + backwards + malformed).
+# Then the real walk (tools/data/xio-gait-tracking/short_walk.csv) with the
+# counts its README states, and logs read back by se23-importcheck: as many
+# samples as rows written, sequence numbers skipping exactly the lost
+# samples, the first sample converted right (deg/s -> rad/s, g -> m/s^2,
+# axes, time units). The programs are built by 60-harness.sh.
+IB="$BUILD/harness/bin"
+IW="$BUILD/check/import"
+IVG="$VALGRIND --suppressions=tools/lcm/valgrind-lcm.supp"
+I_HDR="Time (s),Gyroscope X (deg/s),Gyroscope Y (deg/s),Gyroscope Z (deg/s)"
+I_HDR="$I_HDR,Accelerometer X (g),Accelerometer Y (g),Accelerometer Z (g)"
+I_WALK=tools/data/xio-gait-tracking/short_walk.csv
+mkdir -p "$IW"
+
+# i_import CSV NAME WANT_RC [OPTIONS...]: imports CSV into $IW/NAME.log
+# under valgrind; summary in NAME.out, messages in NAME.err. The exit
+# status must be WANT_RC (valgrind's own is 99).
+i_import() {
+    ir_in=$1
+    ir_name=$2
+    ir_rc=$3
+    shift 3
+    rm -f "$IW/$ir_name.log"
+    $IVG "$IB/se23-import" --out "file://$IW/$ir_name.log?mode=w" "$@" "$ir_in" \
+        >"$IW/$ir_name.out" 2>"$IW/$ir_name.err"
+    ir_got=$?
+    cat "$IW/$ir_name.out" "$IW/$ir_name.err"
+    echo "exit status $ir_got (expected $ir_rc)"
+    [ "$ir_got" -eq "$ir_rc" ]
+}
+
+# i_run NAME WANT_RC [OPTIONS...]: i_import of $IW/NAME.csv.
+i_run() {
+    ir_name=$1
+    shift
+    i_import "$IW/$ir_name.csv" "$ir_name" "$@"
+}
+
+# i_expect NAME COUNTER=VALUE...: the counters of NAME.out; and every row
+# read is written, dropped as repeated or backwards, or malformed.
+i_expect() {
+    ie_out="$IW/$1.out"
+    shift
+    ie_fail=0
+    for ie_kv in "$@"; do
+        ie_key=${ie_kv%%=*}
+        ie_want=${ie_kv#*=}
+        ie_got=$(awk -v k="$ie_key" '$1 == k {print $2}' "$ie_out")
+        if [ "$ie_got" = "$ie_want" ]; then
+            echo "ok   $ie_key = $ie_want"
+        else
+            echo "FAIL $ie_key: expected $ie_want, got $ie_got"
+            ie_fail=1
+        fi
+    done
+    awk '{v[$1] = $2} END {
+        s = v["rows_written"] + v["dup_time"] + v["backwards"] + v["malformed"]
+        m = v["malformed_columns"] + v["malformed_number"] + v["malformed_nonfinite"] + \
+            v["malformed_long"]
+        if (v["rows"] == "" || s != v["rows"] || m != v["malformed"]) {
+            printf "FAIL accounting: rows %s, written + dropped + malformed %d, ", v["rows"], s
+            printf "malformed %s = %d\n", v["malformed"], m
+            exit 1
+        }
+        print "ok   every row accounted for"
+    }' "$ie_out" && [ "$ie_fail" = 0 ]
+}
+
+# i_msg NAME PATTERN: the messages of NAME say PATTERN.
+i_msg() {
+    if grep -q -- "$2" "$IW/$1.err"; then
+        echo "ok   message: $2"
+    else
+        echo "FAIL no message: $2"
+        return 1
+    fi
+}
+
+# i_back NAME KEY=VALUE...: se23-importcheck (under valgrind) reads NAME.log
+# back; each KEY's first value must be VALUE.
+i_back() {
+    ib_name=$1
+    shift
+    $IVG "$IB/se23-importcheck" "$IW/$ib_name.log" >"$IW/$ib_name.back" || return 1
+    cat "$IW/$ib_name.back"
+    ib_fail=0
+    for ib_kv in "$@"; do
+        ib_got=$(awk -v k="${ib_kv%%=*}" '$1 == k {print $2}' "$IW/$ib_name.back")
+        if [ "$ib_got" != "${ib_kv#*=}" ]; then
+            echo "FAIL read back ${ib_kv%%=*}: expected ${ib_kv#*=}, got $ib_got"
+            ib_fail=1
+        fi
+    done
+    [ "$ib_fail" = 0 ]
+}
+
+# i_rows NAME LINE...: NAME.csv is the x-io header and the lines given.
+i_rows() {
+    ir_f="$IW/$1.csv"
+    shift
+    echo "$I_HDR" >"$ir_f"
+    for ir_l in "$@"; do
+        echo "$ir_l" >>"$ir_f"
+    done
+}
+
+# Empty file, header only: status 1, say so, write no log.
+i_empty() {
+    : >"$IW/empty.csv"
+    i_run empty 1 && i_expect empty rows=0 rows_written=0 header_lines=0 &&
+        i_msg empty "no valid row found (the file is empty); nothing written" &&
+        [ ! -e "$IW/empty.log" ]
+}
+check import-empty-file i_empty
+i_header_only() {
+    echo "$I_HDR" >"$IW/header.csv"
+    i_run header 1 && i_expect header rows=0 header_lines=1 &&
+        i_msg header "no data row after 1 header line(s)" && [ ! -e "$IW/header.log" ]
+}
+check import-header-only i_header_only
+
+# Wrong field count (6 and 8 of 7), skipped with their line numbers; a
+# trailing comma or blank is not a field.
+i_columns() {
+    i_rows columns "0,1,2,3,0,0,1" "0.0025,1,2,3,0,0" "0.005,1,2,3,0,0,1,9" \
+        "0.0075,1,2,3,0,0,1," "0.01 , 1, 2 ,3,0,0,1 , ,  " "0.0125,1,2,3,0,0,1"
+    i_run columns 0 && i_expect columns rows=6 rows_written=4 malformed=2 \
+        malformed_columns=2 gaps=1 lost_samples=2 last_seq=6 &&
+        i_msg columns "columns.csv:3: 6 field(s), expected 7, skipped" &&
+        i_msg columns "columns.csv:4: 8 field(s), expected 7, skipped"
+}
+check import-wrong-column-count i_columns
+
+# Text in a number field (gyro, accel, time, an empty field, a NUL byte).
+i_text() {
+    i_rows text "0,1,2,3,0,0,1" "0.0025,1,abc,3,0,0,1" "0.005,1,2,3,0,0,1g" \
+        "12:00:01,1,2,3,0,0,1" "0.0075,1,,3,0,0,1" "0.01,1,2,3,0,0,1"
+    printf '0.0125,1,2\0003,0,0,1\n0.015,1,2,3,0,0,1\n' >>"$IW/text.csv"
+    i_run text 0 && i_expect text rows=8 rows_written=3 malformed=5 malformed_number=5 &&
+        i_msg text 'text.csv:3: column 3: not a number: "abc", skipped' &&
+        i_msg text 'text.csv:4: column 7: not a number: "1g", skipped' &&
+        i_msg text 'text.csv:5: column 1: not a number: "12:00:01", skipped' &&
+        i_msg text 'text.csv:6: column 3: not a number: "", skipped' &&
+        i_msg text "text.csv:8: NUL byte in the line, skipped"
+}
+check import-text-in-number i_text
+
+# NaN, Inf, out of the double range; at most --max-messages 2 messages,
+# then a count.
+i_nonfinite() {
+    i_rows nan "0,1,2,3,0,0,1" "0.0025,nan,2,3,0,0,1" "0.005,1,2,3,NaN,0,1" \
+        "0.0075,1,2,3,0,-Inf,1" "0.01,1,2,1e999,0,0,1" "nan,1,2,3,0,0,1" "0.0125,1,2,3,0,0,1"
+    i_run nan 0 --max-messages 2 && i_expect nan rows=7 rows_written=2 malformed=5 \
+        malformed_nonfinite=5 &&
+        i_msg nan 'nan.csv:3: column 2: not finite (NaN, Inf or out of range): "nan"' &&
+        i_msg nan "nan.csv: 3 more row messages not shown (--max-messages 2)" &&
+        [ "$(grep -c 'not finite' "$IW/nan.err")" -eq 2 ]
+}
+check import-nan-inf i_nonfinite
+
+# A line of 1 MB between valid rows: skipped to its end (bounded buffer),
+# the rows after it still read (the skipped sample counts as lost); a row
+# of exactly 4096 bytes is not too long.
+i_long_line() {
+    i_rows long "0,1,2,3,0,0,1"
+    {
+        printf '0.0025,1,2,3,0,0,'
+        head -c 1048576 /dev/zero | tr '\0' '1'
+        printf '\n0.005,1,2,3,0,0,1\n'
+        awk 'BEGIN { s = "0.0075,1,2,3,0,0,1"; while (length(s) < 4096) s = s " "; print s }'
+        printf '0.01,1,2,3,0,0,1\n'
+    } >>"$IW/long.csv"
+    i_run long 0 && i_expect long rows=5 rows_written=4 malformed=1 malformed_long=1 \
+        gaps=1 lost_samples=1 last_seq=5 &&
+        i_msg long "long.csv:3: line longer than 4096 bytes, skipped"
+}
+check import-long-line-1mb i_long_line
+
+# Time going backwards: dropped, compared with the last row written.
+i_backwards() {
+    i_rows back "0,1,2,3,0,0,1" "0.01,1,2,3,0,0,1" "0.02,1,2,3,0,0,1" "0.015,9,9,9,0,0,1" \
+        "0.005,9,9,9,0,0,1" "0.03,1,2,3,0,0,1"
+    i_run back 0 --rate 100 && i_expect back rows=6 rows_written=4 backwards=2 gaps=0 \
+        last_seq=4 &&
+        i_msg back "back.csv:5: time 0.015000000 s before the previous row's 0.020000000 s"
+}
+check import-time-backwards i_backwards
+
+# Repeated timestamps, with the same values and with others: dropped.
+i_duplicates() {
+    i_rows dup "0,1,2,3,0,0,1" "0.01,1,2,3,0,0,1" "0.01,1,2,3,0,0,1" "0.02,1,2,3,0,0,1" \
+        "0.02,1,2,4,0,0,1" "0.020,1,2,3,0,0,1" "0.03,1,2,3,0,0,1"
+    i_run dup 0 && i_expect dup rows=7 rows_written=4 dup_time=3 dup_time_same=2 gaps=0 \
+        last_seq=4
+}
+check import-duplicate-timestamps i_duplicates
+
+# Gaps at 100 Hz (the median interval: no --rate): 2 then 3 samples lost;
+# the sequence numbers skip them.
+i_gap() {
+    i_rows gap "0,1,2,3,0,0,1" "0.01,1,2,3,0,0,1" "0.02,1,2,3,0,0,1" "0.05,1,2,3,0,0,1" \
+        "0.06,1,2,3,0,0,1" "0.1,1,2,3,0,0,1" "0.11,1,2,3,0,0,1" "0.1249,1,2,3,0,0,1"
+    i_run gap 0 && i_expect gap rows=8 rows_written=8 gaps=2 lost_samples=5 \
+        longest_gap_s=0.040000000 nominal_interval_s=0.010000000 last_seq=13 &&
+        i_back gap samples=8 seq_missing=5 seq_bad=0 time_bad=0 last_seq=13 \
+            last_t_ns=124900000
+}
+check import-gap i_gap
+
+# Values at the sensor's range (input units): counted, kept.
+i_clipped() {
+    i_rows clip "0,1,2,3,0,0,1" "0.01,2000,2,3,0,0,1" "0.02,1,-2000.5,3,0,0,1" \
+        "0.03,1999.9,2,3,15.99,0,1" "0.04,1,2,3,0,16,1" "0.05,1,2,3,0,0,-17" \
+        "0.06,-2000,2,3,-16,0,1"
+    i_run clip 0 --gyro-range 2000 --accel-range 16 &&
+        i_expect clip rows=7 rows_written=7 gyro_clipped=3 accel_clipped=3 malformed=0
+}
+check import-clipped i_clipped
+
+# CRLF line ends (header too), trailing commas and blanks.
+i_crlf() {
+    printf '%s\r\n0,1,2,3,0,0,1\r\n0.01,1,2,3,0,0,1,\r\n' "$I_HDR" >"$IW/crlf.csv"
+    printf '0.02,1,2,3,0,0,1 ,\t\r\n0.03 ,1,2,3,0,0,1\r\n' >>"$IW/crlf.csv"
+    i_run crlf 0 && i_expect crlf rows=4 rows_written=4 malformed=0 gaps=0
+}
+check import-crlf i_crlf
+
+# Bad usage: status 2 (axes not a signed permutation, columns not distinct,
+# units, no --out or not a URL, no input); an unreadable input: 1.
+i_usage() {
+    for iu_args in "--axes x,x,z" "--axes x,y" "--axes x,y,w" "--axes x,y,z,x" "--axes +-x,y,z" \
+        "--gyro-cols 1,2,3" "--accel-cols 5,6" "--time-col 0" "--time-unit h" \
+        "--gyro-unit rpm" "--accel-unit mg" "--g 1" "--header -1" "--rate 0" "--out x.log"; do
+        # shellcheck disable=SC2086
+        $IVG "$IB/se23-import" --out "file://$IW/usage.log?mode=w" $iu_args "$I_WALK" \
+            >"$IW/usage.out" 2>&1
+        iu_rc=$?
+        echo "$iu_args: exit status $iu_rc"
+        [ "$iu_rc" -eq 2 ] || return 1
+    done
+    $IVG "$IB/se23-import" "$I_WALK" >"$IW/usage.out" 2>&1
+    [ $? -eq 2 ] && grep -q -- "--out is required" "$IW/usage.out" || return 1
+    $IVG "$IB/se23-import" --out "file://$IW/usage.log?mode=w" >"$IW/usage.out" 2>&1
+    [ $? -eq 2 ] && grep -q "no input file" "$IW/usage.out" || return 1
+    i_import "$IW/absent.csv" absent 1 && i_msg absent "cannot read $IW/absent.csv"
+}
+check import-usage-and-unreadable i_usage
+
+# Units, axes and exact times, read back: rad/s, m/s^2, ms, --axes y,-x,-z,
+# no header; then Unix time in s keeps its nanoseconds (--header auto skips
+# three header lines).
+i_units_axes() {
+    printf '1000.5,0.1,0.2,0.3,1.5,-2.5,9.75\n1003,0.1,0.2,0.3,1.5,-2.5,9.75\n' >"$IW/units.csv"
+    i_run units 0 --header 0 --time-unit ms --gyro-unit rad/s --accel-unit m/s2 \
+        --axes y,-x,-z &&
+        i_back units samples=2 first_t_ns=1000500000 last_t_ns=1003000000 &&
+        grep -qx "first_omega 0.20000000000000001 -0.10000000000000001 -0.29999999999999999" \
+            "$IW/units.back" &&
+        grep -qx "first_accel -2.5 -1.5 -9.75" "$IW/units.back"
+}
+check import-units-axes-roundtrip i_units_axes
+i_unix_time() {
+    printf 'x-io NGIMU\nrecorded 2023\n%s\n' "$I_HDR" >"$IW/unix.csv"
+    printf '1700000000.123456789,1,2,3,0,0,1\n1700000000.126,1,2,3,0,0,1\n' >>"$IW/unix.csv"
+    printf '17000000001294999995e-10,1,2,3,0,0,1\n' >>"$IW/unix.csv"
+    i_run unix 0 --header auto && i_expect unix header_lines=3 rows=3 rows_written=3 &&
+        i_back unix first_t_ns=1700000000123456789 last_t_ns=1700000000129500000
+}
+check import-unix-time-exact i_unix_time
+
+# The real walk, with the defaults: the counts of its README.
+I_WALK_COUNTS="rows=16539 rows_written=16334 dup_time=205 dup_time_same=205 backwards=0
+    gaps=165 lost_samples=244 longest_gap_s=0.012552738 malformed=0 gyro_clipped=0
+    accel_clipped=0 last_seq=16578"
+i_walk() {
+    # shellcheck disable=SC2086
+    i_import "$I_WALK" walk 0 && i_expect walk $I_WALK_COUNTS
+}
+check import-walk i_walk
+
+# The walk's log read back: one sample per row written, seq skipping the
+# lost samples, and the first sample is the file's first row converted:
+# deg/s * pi/180, g * 9.80665 (relative error below 1e-15).
+i_walk_roundtrip() {
+    i_back walk samples=16334 decode_errors=0 other_events=0 seq_missing=244 seq_bad=0 \
+        time_bad=0 first_seq=1 first_t_ns=0 last_seq=16578 last_t_ns=41618029590 || return 1
+    awk -F, 'NR == 2 {
+        pi = atan2(0, -1)
+        printf "%.17g %.17g %.17g %.17g %.17g %.17g\n", $2 * pi / 180, $3 * pi / 180,
+            $4 * pi / 180, $5 * 9.80665, $6 * 9.80665, $7 * 9.80665
+    }' "$I_WALK" >"$IW/walk.first"
+    awk 'NR == FNR { for (i = 1; i <= 6; i++) want[i] = $i; next }
+        $1 == "first_omega" { for (i = 1; i <= 3; i++) got[i] = $(i + 1) }
+        $1 == "first_accel" { for (i = 1; i <= 3; i++) got[3 + i] = $(i + 1) }
+        END {
+            bad = 0
+            for (i = 1; i <= 6; i++) {
+                d = got[i] - want[i]
+                if (d < 0) d = -d
+                w = want[i] < 0 ? -want[i] : want[i]
+                if (got[i] == "" || d > 1e-15 * w) {
+                    printf "FAIL value %d: %s, expected %.17g\n", i, got[i], want[i]
+                    bad = 1
+                }
+            }
+            if (!bad) print "ok   first sample converted (deg/s -> rad/s, g -> m/s^2)"
+            exit bad
+        }' "$IW/walk.first" "$IW/walk.back"
+}
+check import-walk-roundtrip i_walk_roundtrip

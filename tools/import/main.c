@@ -1,0 +1,593 @@
+/*
+ * se23-import: a CSV IMU log (one row per sample: time, 3 gyro, 3 accel
+ * columns) to the harness's LCM IMU log (SE23_IMU, se23lcm_imu_sample),
+ * checking what real recordings get wrong and counting each kind:
+ * repeated timestamps and time going backwards (rows dropped), gaps
+ * (samples lost: the sequence numbers skip them), values at the sensor's
+ * range (clipping: kept), malformed rows (skipped, reported with their line
+ * number). The defaults read x-io's CSV (Time (s), Gyroscope X/Y/Z (deg/s),
+ * Accelerometer X/Y/Z (g), one header line).
+ *
+ * Two passes over the file unless --rate is given: the first reads the
+ * first RATE_PREFIX intervals between valid rows for the nominal interval
+ * (their median). The output is created at the first valid row, so an
+ * input without one leaves no log behind.
+ *
+ * Exit status: 0 done; 1 the input cannot be read, holds no valid row, or
+ * the output cannot be written; 2 bad usage. Run with --help.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <lcm/lcm.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../lcm/harness.h"
+#include "csv.h"
+#include "hygiene.h"
+#include "row.h"
+#include "se23lcm_imu_sample.h"
+
+#define PROG "se23-import"
+#define RATE_PREFIX 10000 /* intervals read for the nominal rate */
+#define AUTO_HEADER_MAX 64 /* lines --header auto may skip */
+#define DEG (3.14159265358979323846 / 180.0)
+
+typedef struct {
+    const char *in;
+    const char *out;
+    const char *header;  /* "auto" or a number of lines */
+    const char *gyro_cols, *accel_cols, *axes;
+    int64_t time_col, columns, max_messages;
+    int time_unit, gyro_unit, accel_unit;
+    double g, rate, gyro_range, accel_range;
+} opts_t;
+
+typedef struct {
+    opts_t o;
+    row_map_t map;
+    int64_t header_lines; /* -1: auto */
+    hygiene_t h;
+    lcm_t *lc;
+    int64_t messages;     /* per-row messages printed */
+    int64_t suppressed;   /* ... and not printed (beyond --max-messages) */
+    int64_t *dt;          /* pre-pass: intervals between valid rows */
+    size_t n_dt;
+    int64_t prev_t;       /* pre-pass: the last valid row's time */
+    int have_prev;
+    int ncols;            /* fields a row must have (0: any) */
+} importer_t;
+
+static const char *const time_units[] = {"s", "ms", "us", "ns"};
+static const int time_exps[] = {9, 6, 3, 0};
+
+static int find_time_unit(const char *v)
+{
+    int k;
+    for (k = 0; k < 4; k++) {
+        if (strcmp(v, time_units[k]) == 0) {
+            return k;
+        }
+    }
+    return -1;
+}
+
+static int find_gyro_unit(const char *v)
+{
+    return strcmp(v, "rad/s") == 0 ? 0 : strcmp(v, "deg/s") == 0 ? 1 : -1;
+}
+
+static int find_accel_unit(const char *v)
+{
+    if (strcmp(v, "m/s2") == 0 || strcmp(v, "m/s^2") == 0) {
+        return 0;
+    }
+    return strcmp(v, "g") == 0 ? 1 : -1;
+}
+
+static void usage(FILE *f)
+{
+    fprintf(f,
+            "usage: se23-import [options] --out file://LOG?mode=w FILE.csv\n"
+            "Converts a CSV IMU log to the harness's LCM IMU log (channel SE23_IMU).\n"
+            "The defaults read x-io's CSV: Time (s), Gyroscope X/Y/Z (deg/s),\n"
+            "Accelerometer X/Y/Z (g), one header line.\n"
+            "  --out URL              LCM URL to write, e.g. file://imu.log?mode=w (required)\n"
+            "  --time-col N           column of the time, from 1 (1)\n"
+            "  --gyro-cols A,B,C      columns of gyro x,y,z (2,3,4)\n"
+            "  --accel-cols A,B,C     columns of accel x,y,z, specific force (5,6,7)\n"
+            "  --header N|auto        header lines to skip (1); auto: the leading lines\n"
+            "                         with text in a mapped column (at most %d)\n"
+            "  --columns N            fields a row must have; 0: as many as the last\n"
+            "                         header line, or any with no header (0)\n"
+            "  --time-unit s|ms|us|ns (s); parsed as a decimal, exact to 1 ns\n"
+            "  --gyro-unit rad/s|deg/s  (deg/s)\n"
+            "  --accel-unit m/s2|g    (g)\n"
+            "  --g VALUE              1 g [m/s^2], 9.7..9.9 (9.80665)\n"
+            "  --axes MAP             signed permutation applied to both sensors after\n"
+            "                         the units: output x,y,z = the input axes listed,\n"
+            "                         e.g. x,-y,-z or y,x,-z (x,y,z)\n"
+            "  --gyro-range R         |value| >= R counts as clipped, in the INPUT unit\n"
+            "                         of --gyro-unit (0: no check)\n"
+            "  --accel-range R        the same for the accelerometer (0: no check)\n"
+            "  --rate HZ              nominal rate for gap detection (default: the median\n"
+            "                         interval of the first %d intervals, a first pass)\n"
+            "  --max-messages N       per-row messages on stderr, then a count (10)\n"
+            "Rows repeating the last written timestamp, or earlier, are dropped; a\n"
+            "longer interval than the nominal one loses round(interval/nominal - 1)\n"
+            "samples and the sequence numbers skip them. Malformed rows (wrong field\n"
+            "count, text or NaN/Inf in a mapped field, a line over %d bytes) are\n"
+            "skipped. Exit status: 0 done, 1 unreadable input, no valid row or write\n"
+            "error, 2 bad usage.\n",
+            AUTO_HEADER_MAX, RATE_PREFIX, CSV_LINE_MAX);
+}
+
+static void defaults(opts_t *o)
+{
+    memset(o, 0, sizeof *o);
+    o->header = "1";
+    o->gyro_cols = "2,3,4";
+    o->accel_cols = "5,6,7";
+    o->axes = "x,y,z";
+    o->time_col = 1;
+    o->max_messages = 10;
+    o->time_unit = 0;
+    o->gyro_unit = 1;
+    o->accel_unit = 1;
+    o->g = 9.80665;
+}
+
+/* Says what is wrong with the option values (then returns -1). */
+static int bad(const char *what, const char *value)
+{
+    fprintf(stderr, PROG ": bad value for %s: %s\n", what, value);
+    return -1;
+}
+
+/* The 7 mapped columns are distinct. */
+static int distinct_cols(const row_map_t *m)
+{
+    int c[7], i, j;
+    c[0] = m->time_col;
+    for (i = 0; i < 3; i++) {
+        c[1 + i] = m->gyro_col[i];
+        c[4 + i] = m->accel_col[i];
+    }
+    for (i = 0; i < 7; i++) {
+        for (j = i + 1; j < 7; j++) {
+            if (c[i] == c[j]) {
+                return 0;
+            }
+        }
+    }
+    return 1;
+}
+
+/* Option values into im->map and im->header_lines; -1 if one is bad. */
+static int setup(importer_t *im)
+{
+    const opts_t *o = &im->o;
+    row_map_t *m = &im->map;
+    char *end = NULL;
+    if (o->time_col < 1 || o->time_col > ROW_COLS_MAX) {
+        return bad("--time-col", "(from 1 to 1024)");
+    }
+    m->time_col = (int)o->time_col - 1;
+    if (row_parse_cols(o->gyro_cols, m->gyro_col) != 0) {
+        return bad("--gyro-cols", o->gyro_cols);
+    }
+    if (row_parse_cols(o->accel_cols, m->accel_col) != 0) {
+        return bad("--accel-cols", o->accel_cols);
+    }
+    if (!distinct_cols(m)) {
+        fprintf(stderr, PROG ": the time, gyro and accel columns must all differ\n");
+        return -1;
+    }
+    if (row_parse_axes(o->axes, m->perm, m->sign) != 0) {
+        return bad("--axes (a signed permutation of x,y,z)", o->axes);
+    }
+    if (o->columns < 0 || o->columns > ROW_COLS_MAX || o->max_messages < 0) {
+        return bad("--columns or --max-messages", "(negative or too large)");
+    }
+    if (strcmp(o->header, "auto") == 0) {
+        im->header_lines = -1;
+    } else {
+        errno = 0;
+        im->header_lines = strtoll(o->header, &end, 10);
+        if (errno != 0 || end == o->header || *end != '\0' || im->header_lines < 0) {
+            return bad("--header", o->header);
+        }
+    }
+    if (o->out == NULL || o->in == NULL) {
+        fprintf(stderr, PROG ": %s\n", o->in == NULL ? "no input file" : "--out is required");
+        return -1;
+    }
+    if (strstr(o->out, "://") == NULL) {
+        return bad("--out (an LCM URL, e.g. file://imu.log?mode=w)", o->out);
+    }
+    if (strncmp(o->out, "file://", 7) == 0 && strstr(o->out, "mode=w") == NULL &&
+        strstr(o->out, "mode=a") == NULL) {
+        return bad("--out (a file:// URL needs ?mode=w)", o->out);
+    }
+    m->time_exp = time_exps[o->time_unit];
+    m->gyro_scale = o->gyro_unit == 1 ? DEG : 1.0;
+    m->accel_scale = o->accel_unit == 1 ? o->g : 1.0;
+    m->gyro_range = o->gyro_range;
+    m->accel_range = o->accel_range;
+    return 0;
+}
+
+static int parse_args(int argc, char **argv, importer_t *im)
+{
+    const double inf = HUGE_VAL;
+    opts_t *o = &im->o;
+    const char **pos = calloc((size_t)argc, sizeof *pos);
+    int n_pos = 0, rc;
+    const harness_opt_t opts[] = {
+        {"--out", HOPT_STR, &o->out, 0, 0, NULL},
+        {"--time-col", HOPT_I64, &o->time_col, 0, 0, NULL},
+        {"--gyro-cols", HOPT_STR, &o->gyro_cols, 0, 0, NULL},
+        {"--accel-cols", HOPT_STR, &o->accel_cols, 0, 0, NULL},
+        {"--header", HOPT_STR, &o->header, 0, 0, NULL},
+        {"--columns", HOPT_I64, &o->columns, 0, 0, NULL},
+        {"--time-unit", HOPT_CHOICE, &o->time_unit, 0, 0, find_time_unit},
+        {"--gyro-unit", HOPT_CHOICE, &o->gyro_unit, 0, 0, find_gyro_unit},
+        {"--accel-unit", HOPT_CHOICE, &o->accel_unit, 0, 0, find_accel_unit},
+        {"--g", HOPT_DOUBLE, &o->g, 9.7, 9.9, NULL},
+        {"--axes", HOPT_STR, &o->axes, 0, 0, NULL},
+        {"--gyro-range", HOPT_DOUBLE, &o->gyro_range, 0.0, inf, NULL},
+        {"--accel-range", HOPT_DOUBLE, &o->accel_range, 0.0, inf, NULL},
+        {"--rate", HOPT_DOUBLE, &o->rate, 1e-3, 1e9, NULL},
+        {"--max-messages", HOPT_I64, &o->max_messages, 0, 0, NULL},
+    };
+    defaults(o);
+    if (pos == NULL) {
+        return -1;
+    }
+    rc = harness_parse_opts(PROG, argc, argv, opts, (int)(sizeof opts / sizeof opts[0]), usage,
+                            pos, &n_pos);
+    if (rc == 0 && n_pos > 1) {
+        fprintf(stderr, PROG ": one input file only\n");
+        rc = -1;
+    }
+    o->in = n_pos == 1 ? pos[0] : NULL;
+    free(pos);
+    return rc == 0 ? setup(im) : -1;
+}
+
+/* The time t_ns as seconds, into buf. */
+static const char *fmt_s(int64_t t_ns, char *buf, size_t n)
+{
+    uint64_t a = t_ns < 0 ? (uint64_t)0 - (uint64_t)t_ns : (uint64_t)t_ns;
+    snprintf(buf, n, "%s%llu.%09llu", t_ns < 0 ? "-" : "",
+             (unsigned long long)(a / 1000000000u), (unsigned long long)(a % 1000000000u));
+    return buf;
+}
+
+/* A message about line lineno, within the --max-messages budget. */
+static void row_msg(importer_t *im, int64_t lineno, const char *fmt, ...)
+{
+    va_list ap;
+    if (im->messages >= im->o.max_messages) {
+        im->suppressed++;
+        return;
+    }
+    im->messages++;
+    fprintf(stderr, PROG ": %s:%lld: ", im->o.in, (long long)lineno);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputc('\n', stderr);
+}
+
+/* A field, quoted for a message into buf[n] (n > 6): unprintables as '?',
+ * cut to n - 6 bytes ("..." after the closing quote). */
+static const char *quote(csv_field_t fld, char *buf, size_t n)
+{
+    const size_t max = n - 6;
+    size_t i, k = 0;
+    buf[k++] = '"';
+    for (i = 0; i < fld.len && i < max; i++) {
+        unsigned char c = (unsigned char)fld.p[i];
+        buf[k++] = (c >= 0x20 && c < 0x7f) ? fld.p[i] : '?';
+    }
+    buf[k++] = '"';
+    if (fld.len > max) {
+        memcpy(buf + k, "...", 3);
+        k += 3;
+    }
+    buf[k] = '\0';
+    return buf;
+}
+
+/* Counts and reports the malformed row of status st in r. */
+static void malformed(importer_t *im, const csv_reader_t *r, row_status_t st,
+                      const row_why_t *why)
+{
+    import_count_t *c = &im->h.c;
+    char q[46]; /* a field shown up to 40 bytes */
+    if (r->too_long) {
+        c->bad_long++;
+        row_msg(im, r->lineno, "line longer than %d bytes, skipped", CSV_LINE_MAX);
+    } else if (r->has_nul) {
+        c->bad_number++;
+        row_msg(im, r->lineno, "NUL byte in the line, skipped");
+    } else if (st == ROW_COLUMNS) {
+        c->bad_columns++;
+        row_msg(im, r->lineno, "%d field(s), expected %s%d, skipped", why->nfields,
+                im->ncols > 0 ? "" : "at least ",
+                im->ncols > 0 ? im->ncols : row_cols_needed(&im->map));
+    } else {
+        if (st == ROW_TEXT) {
+            c->bad_number++;
+        } else {
+            c->bad_nonfinite++;
+        }
+        row_msg(im, r->lineno, "column %d: %s: %s, skipped", why->bad_col + 1,
+                st == ROW_TEXT ? "not a number" : "not finite (NaN, Inf or out of range)",
+                quote(why->bad, q, sizeof q));
+    }
+}
+
+/* Writes the sample of r with sequence number seq; -1 on failure. */
+static int publish(importer_t *im, const row_t *r, int64_t seq)
+{
+    se23lcm_imu_sample s;
+    if (im->lc == NULL) {
+        im->lc = lcm_create(im->o.out);
+        if (im->lc == NULL) {
+            fprintf(stderr, PROG ": cannot open LCM URL %s\n", im->o.out);
+            return -1;
+        }
+    }
+    memset(&s, 0, sizeof s);
+    s.t_ns = r->t_ns;
+    s.seq = seq;
+    memcpy(s.omega, r->omega, sizeof s.omega);
+    memcpy(s.accel, r->accel, sizeof s.accel);
+    if (se23lcm_imu_sample_publish(im->lc, HARNESS_CH_IMU, &s) != 0) {
+        fprintf(stderr, PROG ": cannot write to %s\n", im->o.out);
+        return -1;
+    }
+    return 0;
+}
+
+/* Main pass: a valid row; 0 to go on, -1 on a write error. */
+static int take_row(importer_t *im, const row_t *r, int64_t lineno)
+{
+    int64_t seq = 0;
+    char a[32], b[32];
+    switch (hygiene_accept(&im->h, r, &seq)) {
+    case HYG_WRITE:
+        return publish(im, r, seq);
+    case HYG_BACK:
+        row_msg(im, lineno, "time %s s before the previous row's %s s, dropped",
+                fmt_s(r->t_ns, a, sizeof a), fmt_s(im->h.last.t_ns, b, sizeof b));
+        return 0;
+    case HYG_DUP:
+    default:
+        return 0;
+    }
+}
+
+/* Pre-pass: collects intervals; 1 once RATE_PREFIX are in. */
+static int take_interval(importer_t *im, const row_t *r)
+{
+    if (im->have_prev && r->t_ns > im->prev_t) {
+        im->dt[im->n_dt++] = r->t_ns - im->prev_t;
+    }
+    if (!im->have_prev || r->t_ns > im->prev_t) {
+        im->prev_t = r->t_ns;
+        im->have_prev = 1;
+    }
+    return im->n_dt >= RATE_PREFIX;
+}
+
+/* Whether the line in r, after seen header lines, is one more. */
+static int is_header(const importer_t *im, const csv_reader_t *r, int64_t seen)
+{
+    if (im->header_lines >= 0) {
+        return seen < im->header_lines;
+    }
+    return seen < AUTO_HEADER_MAX && (r->too_long || row_is_header(&im->map, r->buf));
+}
+
+/*
+ * Reads f from the start: header, then every row. main_pass: count, report,
+ * write (take_row); otherwise collect intervals (take_interval). Returns 0,
+ * or -1 on a read or write error.
+ */
+static int scan(importer_t *im, FILE *f, int main_pass)
+{
+    csv_reader_t *r = malloc(sizeof *r);
+    import_count_t *c = &im->h.c;
+    int64_t seen = 0;
+    int in_header = 1, rc = 0, hdr_cols = 0;
+    if (r == NULL) {
+        return -1;
+    }
+    csv_reader_init(r, f);
+    while (rc == 0 && csv_read_line(r)) {
+        row_t row;
+        row_why_t why;
+        row_status_t st;
+        if (in_header && is_header(im, r, seen)) {
+            seen++;
+            hdr_cols = r->too_long ? 0 : row_count_fields(r->buf);
+            continue;
+        }
+        if (in_header) {
+            /* the row width: --columns, else the last header line's if it
+             * covers the mapped columns, else any */
+            in_header = 0;
+            im->ncols = (int)im->o.columns;
+            if (im->ncols == 0 && seen > 0 && hdr_cols >= row_cols_needed(&im->map)) {
+                im->ncols = hdr_cols;
+            }
+        }
+        st = r->too_long || r->has_nul ? ROW_TEXT
+                                       : row_parse(&im->map, r->buf, im->ncols, &row, &why);
+        if (st == ROW_BLANK) {
+            c->blank += main_pass;
+            continue;
+        }
+        c->rows += main_pass;
+        if (st != ROW_OK) {
+            if (main_pass) {
+                malformed(im, r, st, &why);
+            }
+            continue;
+        }
+        rc = main_pass ? take_row(im, &row, r->lineno) : take_interval(im, &row);
+    }
+    if (main_pass) {
+        c->header = seen;
+    }
+    if (ferror(f)) {
+        fprintf(stderr, PROG ": cannot read %s: %s\n", im->o.in, strerror(errno));
+        rc = -1;
+    }
+    free(r);
+    return rc < 0 ? -1 : 0;
+}
+
+/*
+ * The nominal interval into *nom [ns] (0: unknown, no gap detection) and
+ * how it was found into how: --rate, or the median of the first
+ * RATE_PREFIX intervals between valid rows (a first pass, then f is
+ * rewound). Returns 0, or -1 after saying what failed.
+ */
+static int nominal(importer_t *im, FILE *f, double *nom, char *how, size_t n)
+{
+    int rc;
+    if (im->o.rate > 0.0) {
+        *nom = 1e9 / im->o.rate;
+        snprintf(how, n, "--rate %g Hz", im->o.rate);
+        return 0;
+    }
+    im->dt = malloc(RATE_PREFIX * sizeof *im->dt);
+    if (im->dt == NULL) {
+        fprintf(stderr, PROG ": out of memory\n");
+        return -1;
+    }
+    rc = scan(im, f, 0);
+    if (rc == 0 && fseek(f, 0, SEEK_SET) != 0) {
+        fprintf(stderr, PROG ": cannot rewind %s (give --rate): %s\n", im->o.in, strerror(errno));
+        rc = -1;
+    }
+    *nom = im->n_dt > 0 ? hygiene_median(im->dt, im->n_dt) : 0.0;
+    if (im->n_dt > 0) {
+        snprintf(how, n, "median of the first %zu intervals", im->n_dt);
+    } else {
+        snprintf(how, n, "unknown: no interval, no gap detection");
+    }
+    free(im->dt);
+    im->dt = NULL;
+    return rc;
+}
+
+static void summary(const importer_t *im, double nom, const char *how)
+{
+    const import_count_t *c = &im->h.c;
+    char gap[32], t0[32], t1[32], ns[32];
+    const struct {
+        const char *name;
+        int64_t n;
+    } rows[] = {
+        {"header_lines", c->header},
+        {"blank_lines", c->blank},
+        {"rows", c->rows},
+        {"rows_written", c->written},
+        {"dup_time", c->dup_time},
+        {"dup_time_same", c->dup_same},
+        {"backwards", c->backwards},
+        {"gaps", c->gaps},
+        {"lost_samples", c->lost},
+        {"gyro_clipped", c->gyro_clipped},
+        {"accel_clipped", c->accel_clipped},
+        {"malformed", import_malformed(c)},
+        {"malformed_columns", c->bad_columns},
+        {"malformed_number", c->bad_number},
+        {"malformed_nonfinite", c->bad_nonfinite},
+        {"malformed_long", c->bad_long},
+        {"last_seq", c->seq},
+    };
+    size_t k;
+    fmt_s(c->longest_gap_ns, gap, sizeof gap);
+    printf(PROG ": %s: %lld rows, %lld written; dropped %lld repeated timestamps (%lld with "
+                "repeated values), %lld going backwards, %lld malformed; %lld samples lost in "
+                "%lld gaps (longest %s s); clipped %lld gyro, %lld accel\n",
+           im->o.in, (long long)c->rows, (long long)c->written, (long long)c->dup_time,
+           (long long)c->dup_same, (long long)c->backwards, (long long)import_malformed(c),
+           (long long)c->lost, (long long)c->gaps, gap, (long long)c->gyro_clipped,
+           (long long)c->accel_clipped);
+    printf(PROG ": nominal interval %.6f ms (%.3f Hz; %s); samples from t = %s to %s s\n",
+           nom * 1e-6, nom > 0.0 ? 1e9 / nom : 0.0, how,
+           fmt_s(c->first_t_ns, t0, sizeof t0), fmt_s(c->last_t_ns, t1, sizeof t1));
+    printf(PROG ": counters\n");
+    for (k = 0; k < sizeof rows / sizeof rows[0]; k++) {
+        printf("  %-20s %lld\n", rows[k].name, (long long)rows[k].n);
+    }
+    printf("  %-20s %s\n", "longest_gap_s", gap);
+    printf("  %-20s %s\n", "nominal_interval_s", fmt_s(llround(nom), ns, sizeof ns));
+}
+
+/* Why nothing was written (no valid row), on stderr. */
+static void no_valid_row(const importer_t *im)
+{
+    const import_count_t *c = &im->h.c;
+    fprintf(stderr, PROG ": %s: no valid row found (", im->o.in);
+    if (c->header + c->blank + c->rows == 0) {
+        fprintf(stderr, "the file is empty");
+    } else if (c->rows == 0) {
+        fprintf(stderr, "no data row after %lld header line(s)", (long long)c->header);
+    } else {
+        fprintf(stderr, "%lld data rows, %lld malformed", (long long)c->rows,
+                (long long)import_malformed(c));
+    }
+    fprintf(stderr, "); nothing written\n");
+}
+
+int main(int argc, char **argv)
+{
+    importer_t im;
+    FILE *f;
+    double nom = 0.0;
+    char how[64];
+    int rc;
+    memset(&im, 0, sizeof im);
+    if (parse_args(argc, argv, &im) != 0) {
+        usage(stderr);
+        return 2;
+    }
+    f = fopen(im.o.in, "rb");
+    if (f == NULL) {
+        fprintf(stderr, PROG ": cannot read %s: %s\n", im.o.in, strerror(errno));
+        return 1;
+    }
+    rc = nominal(&im, f, &nom, how, sizeof how);
+    if (rc == 0) {
+        hygiene_init(&im.h, nom);
+        rc = scan(&im, f, 1);
+    }
+    fclose(f);
+    if (im.lc != NULL) {
+        lcm_destroy(im.lc);
+    }
+    if (rc != 0) {
+        return 1;
+    }
+    if (im.suppressed > 0) {
+        fprintf(stderr, PROG ": %s: %lld more row messages not shown (--max-messages %lld)\n",
+                im.o.in, (long long)im.suppressed, (long long)im.o.max_messages);
+    }
+    summary(&im, nom, how);
+    if (im.h.c.written == 0) {
+        no_valid_row(&im);
+        return 1;
+    }
+    return 0;
+}

@@ -1,0 +1,194 @@
+/* One CSV row to one IMU sample; see row.h. */
+#include "row.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static void set_why(row_why_t *why, int nfields, int col, const csv_field_t *fld)
+{
+    if (why != NULL) {
+        why->nfields = nfields;
+        why->bad_col = col;
+        if (fld != NULL) {
+            why->bad = *fld;
+        } else {
+            why->bad.p = "";
+            why->bad.len = 0;
+        }
+    }
+}
+
+int row_cols_needed(const row_map_t *m)
+{
+    int k, c = m->time_col;
+    for (k = 0; k < 3; k++) {
+        c = m->gyro_col[k] > c ? m->gyro_col[k] : c;
+        c = m->accel_col[k] > c ? m->accel_col[k] : c;
+    }
+    return c + 1;
+}
+
+/* The three values of cols into v; the first failure's column in *bad. */
+static csv_num_t parse3(const csv_field_t *f, const int col[3], double v[3], int *bad)
+{
+    int k;
+    for (k = 0; k < 3; k++) {
+        csv_num_t r = csv_parse_real(f[col[k]], &v[k]);
+        if (r != CSV_NUM_OK) {
+            *bad = col[k];
+            return r;
+        }
+    }
+    return CSV_NUM_OK;
+}
+
+static row_status_t num_status(csv_num_t r)
+{
+    return r == CSV_NUM_TEXT ? ROW_TEXT : ROW_NONFINITE;
+}
+
+static int clipped(const double v[3], double range)
+{
+    return range > 0.0 && (fabs(v[0]) >= range || fabs(v[1]) >= range || fabs(v[2]) >= range);
+}
+
+/* Unit conversion, then the axis map. */
+static void convert(const row_map_t *m, const double raw[3], double scale, double out[3])
+{
+    int k;
+    for (k = 0; k < 3; k++) {
+        out[k] = m->sign[k] * (raw[m->perm[k]] * scale);
+    }
+}
+
+row_status_t row_parse(const row_map_t *m, const char *line, int ncols, row_t *out,
+                       row_why_t *why)
+{
+    csv_field_t f[ROW_COLS_MAX];
+    const char *p = line;
+    int nf, bad = -1;
+    csv_num_t r;
+    while (*p == ' ' || *p == '\t') {
+        p++;
+    }
+    if (*p == '\0') {
+        return ROW_BLANK;
+    }
+    nf = csv_split(line, f, ROW_COLS_MAX);
+    if ((ncols > 0 && nf != ncols) || row_cols_needed(m) > nf) {
+        set_why(why, nf, -1, NULL);
+        return ROW_COLUMNS;
+    }
+    r = csv_parse_time(f[m->time_col], m->time_exp, &out->t_ns);
+    if (r != CSV_NUM_OK) {
+        set_why(why, nf, m->time_col, &f[m->time_col]);
+        return num_status(r);
+    }
+    r = parse3(f, m->gyro_col, out->raw_gyro, &bad);
+    if (r == CSV_NUM_OK) {
+        r = parse3(f, m->accel_col, out->raw_accel, &bad);
+    }
+    if (r != CSV_NUM_OK) {
+        set_why(why, nf, bad, &f[bad]);
+        return num_status(r);
+    }
+    convert(m, out->raw_gyro, m->gyro_scale, out->omega);
+    convert(m, out->raw_accel, m->accel_scale, out->accel);
+    out->gyro_clipped = clipped(out->raw_gyro, m->gyro_range);
+    out->accel_clipped = clipped(out->raw_accel, m->accel_range);
+    return ROW_OK;
+}
+
+int row_count_fields(const char *line)
+{
+    return csv_split(line, NULL, 0);
+}
+
+int row_is_header(const row_map_t *m, const char *line)
+{
+    csv_field_t f[ROW_COLS_MAX];
+    const int *cols[2] = {m->gyro_col, m->accel_col};
+    double x;
+    int nf = csv_split(line, f, ROW_COLS_MAX), s, k;
+    if (row_cols_needed(m) > nf) {
+        return 1;
+    }
+    if (csv_parse_real(f[m->time_col], &x) == CSV_NUM_TEXT) {
+        return 1;
+    }
+    for (s = 0; s < 2; s++) {
+        for (k = 0; k < 3; k++) {
+            if (csv_parse_real(f[cols[s][k]], &x) == CSV_NUM_TEXT) {
+                return 1;
+            }
+        }
+    }
+    return 0;
+}
+
+/* The next comma-separated item of *s into item (at most n - 1 chars). */
+static int next_item(const char **s, char *item, size_t n)
+{
+    const char *comma = strchr(*s, ',');
+    size_t len = comma != NULL ? (size_t)(comma - *s) : strlen(*s);
+    if (len >= n) {
+        return -1;
+    }
+    memcpy(item, *s, len);
+    item[len] = '\0';
+    *s = comma != NULL ? comma + 1 : NULL;
+    return 0;
+}
+
+int row_parse_cols(const char *s, int col[3])
+{
+    char item[16];
+    int k, tmp[3];
+    for (k = 0; k < 3; k++) {
+        char *end = NULL;
+        long v;
+        if (s == NULL || next_item(&s, item, sizeof item) != 0) {
+            return -1;
+        }
+        v = strtol(item, &end, 10);
+        if (end == item || *end != '\0' || v < 1 || v > ROW_COLS_MAX) {
+            return -1;
+        }
+        tmp[k] = (int)v - 1;
+    }
+    if (s != NULL) {
+        return -1;
+    }
+    memcpy(col, tmp, sizeof tmp);
+    return 0;
+}
+
+int row_parse_axes(const char *s, int perm[3], double sign[3])
+{
+    char item[4];
+    int k, used[3] = {0, 0, 0}, p[3];
+    double sg[3];
+    for (k = 0; k < 3; k++) {
+        const char *a = item;
+        if (s == NULL || next_item(&s, item, sizeof item) != 0) {
+            return -1;
+        }
+        sg[k] = 1.0;
+        if (*a == '+' || *a == '-') {
+            sg[k] = *a == '-' ? -1.0 : 1.0;
+            a++;
+        }
+        if (a[0] < 'x' || a[0] > 'z' || a[1] != '\0' || used[a[0] - 'x']) {
+            return -1;
+        }
+        p[k] = a[0] - 'x';
+        used[p[k]] = 1;
+    }
+    if (s != NULL) {
+        return -1;
+    }
+    memcpy(perm, p, sizeof p);
+    memcpy(sign, sg, sizeof sg);
+    return 0;
+}
