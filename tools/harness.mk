@@ -6,6 +6,8 @@
 #   make demo        60 s UAV flight, MEMS IMU 200 Hz, Earth rotation, GNSS 5 Hz,
 #                    sim -> LCM -> se23-ins -> LCM -> report + plots
 #   make demo-live   the same over udpm:// in a private network namespace
+#   make demo-walk   a real foot-mounted walk (CSV) through the library's filter:
+#                    loop-closure error, distance, stance phases, plots
 #   make bench-ins   se23-ins throughput on a recorded log of 1.2 M IMU samples
 
 H := $(BUILD)/harness
@@ -37,7 +39,7 @@ H_HDRS := $(wildcard tools/lcm/*.h tools/sim/*.h tools/ins/*.h tools/report/*.h 
 H_LIB := $(BUILD)/lib-host-double/libse23.a
 h_objs = $(patsubst %.c,$(H)/obj/%.o,$(1))
 
-.PHONY: harness demo demo-live bench-ins
+.PHONY: harness demo demo-live demo-walk bench-ins
 
 harness: $(H_BIN)/se23-sim $(H_BIN)/se23-ins $(H_BIN)/se23-report $(H_BIN)/se23-corrupt \
          $(H_BIN)/se23-simcheck $(H_BIN)/se23-walk $(H_BIN)/se23-ins-float \
@@ -98,6 +100,11 @@ demo:
 	@sh tools/install-deps.sh $(BUILD)
 	@$(MAKE) -s --no-print-directory harness BUILD=$(BUILD)
 	@sh tools/lcm/demo.sh $(H)
+
+demo-walk:
+	@sh tools/install-deps.sh $(BUILD)
+	@$(MAKE) -s --no-print-directory harness BUILD=$(BUILD)
+	@sh tools/walk/demo-walk.sh $(H)
 
 demo-live:
 	@sh tools/install-deps.sh $(BUILD)

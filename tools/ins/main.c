@@ -71,12 +71,15 @@ static void usage(FILE *f)
             "  --gate-recover N      reset position/velocity to the fix after N\n"
             "                        consecutive gated fixes, 0 = never (5)\n"
             "  --lever X,Y,Z         GNSS antenna lever arm, body frame [m] (0,0,0)\n"
-            "  --delay-horizon S     fuse fixes up to S s late at their own time (0.25;\n"
-            "                        the ring holds 2 S of samples at the IMU rate)\n"
+            "  --delay-horizon S     fuse fixes up to S s late at their own time (0.25,\n"
+            "                        or less at rates where the ring of SE23_INS_RING\n"
+            "                        samples cannot hold 2 S of them)\n"
             "  --zupt on|off         zero-velocity/-rate updates at rest, from the\n"
             "                        stationary detector (off)\n"
             "  --zupt-window N       detector window [samples] (20)\n"
             "  --zupt-alpha A        detector's false-motion probability at rest (0.01)\n"
+            "  --zupt-sigma-v S      1-sigma of v = 0 at rest [m/s] (0.01; the preset's\n"
+            "                        with --preset; this option overrides both)\n"
             "  --max-gap S           longest interval one sample may bridge (25 samples)\n"
             "  --max-outage S        longest outage carried across (10)\n"
             "  --preint S            publish preintegrated factors of S seconds (0 = off)\n"
@@ -150,10 +153,10 @@ static int preset_find(const char *name)
 static int parse_args(int argc, char **argv, node_opts_t *o, se23_ins_config_t *c)
 {
     const double inf = HUGE_VAL;
-    double rate = 200.0, lat_deg = 45.0, max_gap = -1.0, gate = 30.0, horizon = 0.25;
+    double rate = 200.0, lat_deg = 45.0, max_gap = -1.0, gate = 30.0, horizon = -1.0;
     double max_outage = 10.0, preint = 0.0, lever[3] = {0.0, 0.0, 0.0};
     int64_t recover = 5, window = 20;
-    double alpha = 0.01;
+    double alpha = 0.01, zupt_sv = -1.0;
     int profile = HARNESS_IMU_MEMS, earth = 1, bias = 1, zupt = 0, i;
     const harness_imu_profile_t *prof;
     const harness_opt_t opts[] = {
@@ -173,6 +176,7 @@ static int parse_args(int argc, char **argv, node_opts_t *o, se23_ins_config_t *
         {"--zupt", HOPT_CHOICE, &zupt, 0, 0, harness_on_off},
         {"--zupt-window", HOPT_I64, &window, 0, 0, NULL},
         {"--zupt-alpha", HOPT_DOUBLE, &alpha, 1e-6, 0.5, NULL},
+        {"--zupt-sigma-v", HOPT_DOUBLE, &zupt_sv, 1e-6, 1e3, NULL},
         {"--max-gap", HOPT_DOUBLE, &max_gap, 1e-6, 1.0, NULL},
         {"--max-outage", HOPT_DOUBLE, &max_outage, 0.0, (double)SE23_INS_MAX_OUTAGE, NULL},
         {"--preint", HOPT_DOUBLE, &preint, 0.0, inf, NULL},
@@ -228,13 +232,18 @@ static int parse_args(int argc, char **argv, node_opts_t *o, se23_ins_config_t *
     }
     c->gnss_gate = gate;
     c->gate_recover = (int)recover;
-    c->delay_horizon = horizon;
+    /* default: 0.25 s, or what the ring holds at this rate */
+    c->delay_horizon = horizon >= 0.0 ? horizon
+                                      : fmin(0.25, (SE23_INS_RING - 3) * c->dt_nominal / 2.0);
     c->preint_window = preint;
     c->zupt = zupt;
     zupt_config(prof, rate, lat_deg * DEG, (int)window, alpha, c);
     if (o->preset == 1 && se23_ins_preset_foot(rate, lat_deg * DEG, c, &o->align) != SE23_OK) {
         fprintf(stderr, "se23-ins: --preset foot needs --imu-rate in [50, 10000]\n");
         return -1;
+    }
+    if (zupt_sv > 0.0) {
+        c->zupt_sigma_v = zupt_sv;
     }
     return 0;
 }
