@@ -185,7 +185,7 @@ gates-target: cross target
 	$(foreach v,$(TGT_VARIANTS),$(PY3) tools/target/symbol_gate.py heap $(BUILD)/lib-$(v)/*.o &&) true
 	$(foreach v,$(TGT_VARIANTS),$(PY3) tools/target/symbol_gate.py stdio $(BUILD)/lib-$(v)/*.o &&) true
 	$(foreach v,$(TGT_VARIANTS),$(PY3) tools/target/stack_gate.py $(BUILD)/lib-$(v) \
-	    $(TGT)/$(v)/tv_test.elf $(TGT_BUDGETS)/stack.txt $(v) &&) true
+	    $(TGT)/$(v)/tv_test.elf,$(TGT)/$(v)/ins_replay.elf $(TGT_BUDGETS)/stack.txt $(v) &&) true
 	$(foreach v,$(TGT_VARIANTS),$(PY3) tools/target/size_gate.py $(BUILD)/lib-$(v)/libse23.a \
 	    $(TGT_BUDGETS)/size.txt $(v) &&) true
 
