@@ -133,15 +133,15 @@ test-target-corrupt: target
 	  if [ $$rc -eq 1 ]; then echo "$(v): corrupted vector detected (exit 1, as required)"; \
 	  else echo "$(v): corrupted vector gave exit $$rc, expected 1"; fail=1; fi;) exit $$fail
 
-# The replay's own test: the image built from a reference with two
-# perturbed values (a position, a counter; gen_ins_replay --corrupt) must
-# report exactly those two checkpoints as failed.
+# The replay's own test: the image built from a reference with three
+# perturbed values (a position, a counter, a detector threshold;
+# gen_ins_replay --corrupt) must report exactly those three checks failed.
 .PHONY: test-target-ins-corrupt
 test-target-ins-corrupt: target
 	@fail=0; $(foreach v,$(TGT_VARIANTS),\
 	  $(QEMU_RUN) $(TGT_BOARD_$(v)) $(TGT)/$(v)/ins_replay_corrupt.elf; rc=$$?; \
-	  if [ $$rc -eq 2 ]; then echo "$(v): perturbed reference detected (exit 2, as required)"; \
-	  else echo "$(v): perturbed reference gave exit $$rc, expected 2"; fail=1; fi;) exit $$fail
+	  if [ $$rc -eq 3 ]; then echo "$(v): perturbed reference detected (exit 3, as required)"; \
+	  else echo "$(v): perturbed reference gave exit $$rc, expected 3"; fail=1; fi;) exit $$fail
 
 # Fixtures the gates must reject (tests/target/gate_fixtures), compiled like
 # the M4F float library: $(TGT)/gate-fixtures/<name>/<name>.o (+ .su, .ci).

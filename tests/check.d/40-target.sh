@@ -3,8 +3,8 @@
 # vectors of every public routine (tests/target), the navigation filter run
 # through recorded sequences against the host's double run
 # (tests/target/ins_replay.c), and the runners' own tests (one corrupted
-# vector must fail exactly one check; two perturbed replay references,
-# exactly two checkpoints). The POSIX port runs the
+# vector must fail exactly one check; three perturbed replay references,
+# exactly three checks). The POSIX port runs the
 # same self-test on the host; the template port must compile.
 check port-posix make -s test-port-posix BUILD="$BUILD"
 check port-template cc -std=c99 -Wall -Wextra -Wpedantic -Werror -Iport \

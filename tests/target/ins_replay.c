@@ -11,15 +11,20 @@
  *  - within the tolerances below: R, v, p, the biases, the diagonal of P
  *    (relative), and the last factor's Deltas, Delta t and diagonal of P
  *    (relative).
- * Prints one line per checkpoint and the worst deviation of each quantity
- * over the run; exits with the number of failed checkpoints (capped at
- * INSR_EXIT_MAX; 254/255 are the port's assert/fault codes).
+ * Then the two stateless functions of ins.h, se23_ins_preset_foot and
+ * se23_ins_detector_threshold, on a few inputs (two of them error cases)
+ * against the host's double results: statuses and integers exactly, reals
+ * to PRESET_TOL relative.
+ * Prints one line per checkpoint, one for the presets and the worst
+ * deviation of each quantity over the run; exits with the number of failed
+ * checkpoints and calls (capped at INSR_EXIT_MAX; 254/255 are the port's
+ * assert/fault codes).
  *
  * Tolerances. Double (Cortex-M7): the same code and inputs as the host
  * double run; they differ only by fused multiply-adds (the target library
  * is built with -ffp-contract=fast) and newlib's libm against glibc's, a
  * few ulps per operation that the filter's updates keep from growing:
- * measured at most 4.4e-13 m in position, 1.0e-14 in R and 9.1e-13
+ * measured at most 2.8e-13 m in position, 3.7e-15 in R and 9.0e-13
  * relative in the diagonal of P, so 1e-9 (absolute in the quantity's
  * units, relative for covariances) leaves three orders of magnitude and
  * still catches any real difference of code or inputs. Float (Cortex-M4F):
@@ -52,15 +57,15 @@ static const double tol[N_GROUPS] = {1e-9, 1e-9, 1e-9, 1e-9, 1e-9, 1e-9,
                                      1e-9, 1e-9, 1e-9, 1e-9, 1e-9};
 #else
 static const double tol[N_GROUPS] = {
-    1e-4,   /* R             [1.9e-5] */
-    2.5e-4, /* v             [4.8e-5 m/s] */
-    1e-2,   /* p             [1.8e-3 m, at ~130 m from the origin] */
-    2e-7,   /* b_g           [3.7e-8 rad/s] */
-    1.5e-4, /* b_a           [2.8e-5 m/s^2] */
-    2e-2,   /* diag P        [3.8e-3 relative] */
+    1e-4,   /* R             [2.0e-5] */
+    2.5e-4, /* v             [5.3e-5 m/s] */
+    1e-2,   /* p             [1.7e-3 m, at ~130 m from the origin] */
+    3e-7,   /* b_g           [6.3e-8 rad/s] */
+    1.5e-4, /* b_a           [3.3e-5 m/s^2] */
+    2e-2,   /* diag P        [2.3e-3 relative] */
     1.2e-6, /* factor dR     [2.4e-7] */
-    8e-5,   /* factor dV     [1.5e-5 m/s] */
-    2e-5,   /* factor dX     [3.7e-6 m] */
+    8e-5,   /* factor dV     [1.7e-5 m/s] */
+    2e-5,   /* factor dX     [4.1e-6 m] */
     4e-6,   /* factor dt     [7.8e-7 s, a sum of 100-200 float dt] */
     3e-5};  /* factor diag P [6.3e-6 relative] */
 #endif
@@ -161,6 +166,90 @@ static int check(const insr_seq_t *s, const insr_check_t *o, const insr_check_t 
     return fails != 0;
 }
 
+/* Relative deviation of the presets' and the threshold's reals from the
+ * host's double values: a handful of operations each (products with
+ * pi/180, a square root, a cube), so a few ulps of the build's precision
+ * (measured 2.4e-7 in float, 6.5e-16 in double). */
+#if SE23_CFG_DOUBLE
+#define PRESET_TOL 1e-12
+#else
+#define PRESET_TOL 1e-6
+#endif
+
+static double rel_dev(se23_real_t got, se23_real_t ref)
+{
+    const double d = (double)got - (double)ref;
+    const double a = d < 0.0 ? -d : d;
+    const double r = (double)ref < 0.0 ? -(double)ref : (double)ref;
+    if (!(a == a)) {
+        return 1e30;
+    }
+    return r > 0.0 ? a / r : (a > 0.0 ? 1e30 : 0.0);
+}
+
+/* se23_ins_preset_foot and se23_ins_detector_threshold against the host;
+ * returns the number of failed calls. */
+static int check_presets(void)
+{
+    static se23_ins_config_t cfg; /* static: kept off the stack */
+    se23_ins_align_t al;
+    se23_real_t r[INSR_FLAT_REALS], rr[INSR_FLAT_REALS];
+    int iv[INSR_FLAT_INTS], ir[INSR_FLAT_INTS];
+    double worst = 0.0;
+    int fails = 0, k, i;
+    for (k = 0; k < insr_n_presets; ++k) {
+        const insr_preset_t *p = &insr_presets[k];
+        int bad = 0;
+        int st;
+        memset(&cfg, 0, sizeof cfg);
+        memset(&al, 0, sizeof al);
+        st = (int)se23_ins_preset_foot(p->rate_hz, p->lat, &cfg, &al);
+        if (st != p->status) {
+            printf("FAIL se23_ins_preset_foot(%g, %g): status %d, expected %d\n",
+                   (double)p->rate_hz, (double)p->lat, st, p->status);
+            ++fails;
+            continue;
+        }
+        if (st != SE23_OK) {
+            continue;
+        }
+        insr_flatten(&cfg, &al, r, iv);
+        insr_flatten(&p->cfg, &p->align, rr, ir);
+        for (i = 0; i < INSR_FLAT_INTS; ++i) {
+            bad += iv[i] != ir[i];
+        }
+        for (i = 0; i < INSR_FLAT_REALS; ++i) {
+            const double d = rel_dev(r[i], rr[i]);
+            worst = d > worst ? d : worst;
+            if (!(d <= PRESET_TOL)) {
+                printf("FAIL se23_ins_preset_foot(%g, %g): real %d = %.9g, expected %.17g\n",
+                       (double)p->rate_hz, (double)p->lat, i, (double)r[i], (double)rr[i]);
+                ++bad;
+            }
+        }
+        if (bad != 0) {
+            printf("FAIL se23_ins_preset_foot(%g, %g): %d field(s) differ\n",
+                   (double)p->rate_hz, (double)p->lat, bad);
+            ++fails;
+        }
+    }
+    for (k = 0; k < insr_n_thresholds; ++k) {
+        const insr_threshold_t *t = &insr_thresholds[k];
+        const se23_real_t thr = se23_ins_detector_threshold(t->window, t->z);
+        const double d = rel_dev(thr, t->threshold);
+        worst = d > worst ? d : worst;
+        if (!(d <= PRESET_TOL)) {
+            printf("FAIL se23_ins_detector_threshold(%d, %g) = %.9g, expected %.17g\n",
+                   t->window, (double)t->z, (double)thr, (double)t->threshold);
+            ++fails;
+        }
+    }
+    printf("presets   %d se23_ins_preset_foot, %d se23_ins_detector_threshold calls  worst "
+           "%.2e relative (tol %.0e)  %s\n",
+           insr_n_presets, insr_n_thresholds, worst, PRESET_TOL, fails != 0 ? "FAIL" : "ok");
+    return fails;
+}
+
 int main(void)
 {
     int fails = 0, s, j;
@@ -185,6 +274,7 @@ int main(void)
             fails += check(q, &got[j], &q->check[j]);
         }
     }
+    fails += check_presets();
     printf("worst deviation over the run (tolerance):\n");
     for (j = 0; j < N_GROUPS; ++j) {
         printf("  %-20s %9.2e  (tol %.1e%s: %5.1f%%)\n", group_name[j], worst_run[j], tol[j],

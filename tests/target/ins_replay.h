@@ -79,6 +79,35 @@ typedef struct {
 extern const insr_seq_t insr_seqs[];
 extern const int insr_n_seqs;
 
+/** A call of se23_ins_preset_foot(rate_hz, lat) and its reference outputs
+ *  (cfg, align on SE23_OK). */
+typedef struct {
+    se23_real_t rate_hz, lat;
+    int status;
+    se23_ins_config_t cfg;
+    se23_ins_align_t align;
+} insr_preset_t;
+
+/** A call of se23_ins_detector_threshold(window, z) and its reference. */
+typedef struct {
+    int window;
+    se23_real_t z, threshold;
+} insr_threshold_t;
+
+extern const insr_preset_t insr_presets[];
+extern const int insr_n_presets;
+extern const insr_threshold_t insr_thresholds[];
+extern const int insr_n_thresholds;
+
+/** Reals and integers of a configuration with its alignment request. */
+#define INSR_FLAT_REALS 35
+#define INSR_FLAT_INTS 6
+
+/** r, iv = every real and every integer field of c and a, in a fixed
+ *  order (for field-by-field comparisons). */
+void insr_flatten(const se23_ins_config_t *c, const se23_ins_align_t *a,
+                  se23_real_t r[INSR_FLAT_REALS], int iv[INSR_FLAT_INTS]);
+
 /** Called by insr_drive after every input: what 0 after IMU sample k (its
  *  verdict), 1 after a fix delivered at k (its verdict). */
 typedef void (*insr_hook_t)(void *ctx, const se23_ins_t *ins, int k, int what, int verdict);

@@ -142,3 +142,20 @@ int insr_drive(const insr_seq_t *s, se23_ins_t *ins, insr_check_t *got, insr_hoo
     }
     return bad + (next_check != s->n_check);
 }
+
+void insr_flatten(const se23_ins_config_t *c, const se23_ins_align_t *a,
+                  se23_real_t r[INSR_FLAT_REALS], int iv[INSR_FLAT_INTS])
+{
+    const se23_real_t reals[INSR_FLAT_REALS] = {
+        c->noise.gyro_noise, c->noise.accel_noise, c->noise.gyro_walk, c->noise.accel_walk,
+        c->gyro_range, c->accel_range, c->lat, c->dt_nominal, c->max_gap, c->max_outage,
+        c->outage_accel, c->outage_rate, c->lever_b.v[0], c->lever_b.v[1], c->lever_b.v[2],
+        c->gnss_gate, c->delay_horizon, c->preint_window, c->detector.sigma_a,
+        c->detector.sigma_g, c->detector.gravity, c->detector.threshold, c->zupt_sigma_v,
+        c->zaru_sigma_w, c->zaru_after, a->p_n.v[0], a->p_n.v[1], a->p_n.v[2], a->sigma_p,
+        a->yaw, a->sigma_yaw, a->sigma_v, a->sigma_bg, a->sigma_ba, a->duration};
+    const int ints[INSR_FLAT_INTS] = {c->earth_rotation, c->bias_states, c->gate_recover,
+                                      c->zupt, c->detector.window, a->gyrocompass};
+    memcpy(r, reals, sizeof reals);
+    memcpy(iv, ints, sizeof ints);
+}
