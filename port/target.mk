@@ -28,6 +28,19 @@ TGT_GEN := $(TGT)/gen_vectors
 # The routine whose first expected value the runner's own test corrupts.
 TGT_CORRUPT := se23_so3_exp
 
+# The navigation-filter replay (tests/target/ins_replay.c): recorded
+# sequences and the host's double reference from tools/target/gen_ins_replay
+# (C, linked with the host double library; the same driver
+# tests/target/ins_replay_drive.c runs on both sides).
+TGT_INSR_GEN := $(TGT)/gen_ins_replay
+TGT_INSR_OBJS = $(TGT)/$(1)/ins_replay.o $(TGT)/$(1)/ins_replay_drive.o
+$(TGT_INSR_GEN): tools/target/gen_ins_replay.c tests/target/ins_replay_drive.c \
+                 tests/target/ins_replay.h tests/support/se23_rng.c tests/support/se23_rng.h \
+                 $(LIB_HDRS) $(BUILD)/lib-host-double/libse23.a
+	mkdir -p $(@D)
+	$(CC) $(WARN) -O2 -Iinclude -Itests/target -Itests/support -DSE23_CFG_DOUBLE=1 \
+	    $(filter %.c,$^) $(BUILD)/lib-host-double/libse23.a -lm -o $@
+
 TGT_VARIANTS := m4f-float m7-double
 TGT_BOARD_m4f-float := mps2-an386
 TGT_BOARD_m7-double := mps2-an500
@@ -58,6 +71,13 @@ $(TGT)/$(1)/tv_data.c: $(TGT_GEN) | $(TGT)/$(1)/port
 	$(TGT_GEN) $(if $(filter 1,$(3)),double,float) > $$@.tmp && mv $$@.tmp $$@
 $(TGT)/$(1)/tv_data_corrupt.c: $(TGT_GEN) | $(TGT)/$(1)/port
 	$(TGT_GEN) $(if $(filter 1,$(3)),double,float) --corrupt $(TGT_CORRUPT) > $$@.tmp && mv $$@.tmp $$@
+$(TGT)/$(1)/ins_replay_data.c: $(TGT_INSR_GEN) | $(TGT)/$(1)/port
+	$(TGT_INSR_GEN) > $$@.tmp 2> $$(@:.c=.log) || { cat $$(@:.c=.log); exit 1; }
+	mv $$@.tmp $$@
+$(TGT)/$(1)/ins_replay_data_corrupt.c: $(TGT_INSR_GEN) | $(TGT)/$(1)/port
+	$(TGT_INSR_GEN) --corrupt > $$@.tmp 2> $$(@:.c=.log) || { cat $$(@:.c=.log); exit 1; }
+	mv $$@.tmp $$@
+$(TGT)/$(1)/ins_replay_data.o $(TGT)/$(1)/ins_replay_data_corrupt.o: tests/target/ins_replay.h
 $(TGT)/$(1)/port:
 	mkdir -p $$@
 $(TGT)/$(1)/tv_test.elf: $(call TGT_TV_OBJS,$(1)) $(TGT)/$(1)/tv_data.o $(call TGT_PORT_OBJS,$(1)) \
@@ -68,6 +88,15 @@ $(TGT)/$(1)/tv_corrupt.elf: $(call TGT_TV_OBJS,$(1)) $(TGT)/$(1)/tv_data_corrupt
                             $(BUILD)/lib-$(1)/libse23.a port/cortex-m/sections.ld
 	$(ARM_CC) $(2) $(TGT_LDFLAGS) -u _printf_float -Tport/cortex-m/$(TGT_BOARD_$(1)).ld \
 	    $$(filter %.o %.a,$$^) -lm -o $$@
+$(TGT)/$(1)/ins_replay.elf: $(call TGT_INSR_OBJS,$(1)) $(TGT)/$(1)/ins_replay_data.o $(call TGT_PORT_OBJS,$(1)) \
+                            $(BUILD)/lib-$(1)/libse23.a port/cortex-m/sections.ld
+	$(ARM_CC) $(2) $(TGT_LDFLAGS) -u _printf_float -Tport/cortex-m/$(TGT_BOARD_$(1)).ld \
+	    -Wl,-Map,$$(@:.elf=.map) $$(filter %.o %.a,$$^) -lm -o $$@
+$(TGT)/$(1)/ins_replay_corrupt.elf: $(call TGT_INSR_OBJS,$(1)) $(TGT)/$(1)/ins_replay_data_corrupt.o \
+                                    $(call TGT_PORT_OBJS,$(1)) $(BUILD)/lib-$(1)/libse23.a \
+                                    port/cortex-m/sections.ld
+	$(ARM_CC) $(2) $(TGT_LDFLAGS) -u _printf_float -Tport/cortex-m/$(TGT_BOARD_$(1)).ld \
+	    $$(filter %.o %.a,$$^) -lm -o $$@
 $(TGT)/$(1)/port_selftest.elf: $(TGT)/$(1)/port_selftest.o $(call TGT_PORT_OBJS,$(1)) \
                                port/cortex-m/sections.ld port/cortex-m/$(TGT_BOARD_$(1)).ld
 	$(ARM_CC) $(2) $(TGT_LDFLAGS) -Tport/cortex-m/$(TGT_BOARD_$(1)).ld \
@@ -76,8 +105,9 @@ endef
 $(eval $(call tgt_variant,m4f-float,$(M4F_FLAGS),0))
 $(eval $(call tgt_variant,m7-double,$(M7_FLAGS),1))
 
-TGT_RUN_IMAGES := port_selftest tv_test
-TGT_IMAGES := $(foreach v,$(TGT_VARIANTS),$(foreach i,$(TGT_RUN_IMAGES) tv_corrupt,$(TGT)/$(v)/$(i).elf))
+TGT_RUN_IMAGES := port_selftest tv_test ins_replay
+TGT_IMAGES := $(foreach v,$(TGT_VARIANTS),$(foreach i,$(TGT_RUN_IMAGES) tv_corrupt ins_replay_corrupt,\
+                $(TGT)/$(v)/$(i).elf))
 
 target: $(TGT_IMAGES)
 
@@ -102,6 +132,16 @@ test-target-corrupt: target
 	  $(QEMU_RUN) $(TGT_BOARD_$(v)) $(TGT)/$(v)/tv_corrupt.elf; rc=$$?; \
 	  if [ $$rc -eq 1 ]; then echo "$(v): corrupted vector detected (exit 1, as required)"; \
 	  else echo "$(v): corrupted vector gave exit $$rc, expected 1"; fail=1; fi;) exit $$fail
+
+# The replay's own test: the image built from a reference with three
+# perturbed values (a position, a counter, a detector threshold;
+# gen_ins_replay --corrupt) must report exactly those three checks failed.
+.PHONY: test-target-ins-corrupt
+test-target-ins-corrupt: target
+	@fail=0; $(foreach v,$(TGT_VARIANTS),\
+	  $(QEMU_RUN) $(TGT_BOARD_$(v)) $(TGT)/$(v)/ins_replay_corrupt.elf; rc=$$?; \
+	  if [ $$rc -eq 3 ]; then echo "$(v): perturbed reference detected (exit 3, as required)"; \
+	  else echo "$(v): perturbed reference gave exit $$rc, expected 3"; fail=1; fi;) exit $$fail
 
 # Fixtures the gates must reject (tests/target/gate_fixtures), compiled like
 # the M4F float library: $(TGT)/gate-fixtures/<name>/<name>.o (+ .su, .ci).
@@ -145,7 +185,7 @@ gates-target: cross target
 	$(foreach v,$(TGT_VARIANTS),$(PY3) tools/target/symbol_gate.py heap $(BUILD)/lib-$(v)/*.o &&) true
 	$(foreach v,$(TGT_VARIANTS),$(PY3) tools/target/symbol_gate.py stdio $(BUILD)/lib-$(v)/*.o &&) true
 	$(foreach v,$(TGT_VARIANTS),$(PY3) tools/target/stack_gate.py $(BUILD)/lib-$(v) \
-	    $(TGT)/$(v)/tv_test.elf $(TGT_BUDGETS)/stack.txt $(v) &&) true
+	    $(TGT)/$(v)/tv_test.elf,$(TGT)/$(v)/ins_replay.elf $(TGT_BUDGETS)/stack.txt $(v) &&) true
 	$(foreach v,$(TGT_VARIANTS),$(PY3) tools/target/size_gate.py $(BUILD)/lib-$(v)/libse23.a \
 	    $(TGT_BUDGETS)/size.txt $(v) &&) true
 

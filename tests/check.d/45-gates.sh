@@ -1,5 +1,6 @@
 # Gates on the library objects built for Cortex-M (make cross; the images of
-# 40-target.sh supply newlib's code for the stack analysis):
+# 40-target.sh, tv_test and ins_replay, supply newlib's code for the stack
+# analysis):
 #  - no soft-double call in the float (M4F) build, no heap and no stdio in
 #    either build (tools/target/symbol_gate.py, on objects, not images);
 #  - worst-case stack of every public function, callees included, within
@@ -31,7 +32,8 @@ for gate_v in m4f-float m7-double; do
     check "gate-$gate_v-no-heap" $PY3 tools/target/symbol_gate.py heap "$BUILD/lib-$gate_v"/*.o
     check "gate-$gate_v-no-stdio" $PY3 tools/target/symbol_gate.py stdio "$BUILD/lib-$gate_v"/*.o
     check "gate-$gate_v-stack" $PY3 tools/target/stack_gate.py "$BUILD/lib-$gate_v" \
-        "$BUILD/target/$gate_v/tv_test.elf" tests/target/budgets/stack.txt "$gate_v"
+        "$BUILD/target/$gate_v/tv_test.elf,$BUILD/target/$gate_v/ins_replay.elf" \
+        tests/target/budgets/stack.txt "$gate_v"
     check "gate-$gate_v-size" $PY3 tools/target/size_gate.py "$BUILD/lib-$gate_v/libse23.a" \
         tests/target/budgets/size.txt "$gate_v"
 done

@@ -19,7 +19,15 @@
  * tol: outputs must satisfy |got - expected| <= tol * eps * scale (eps of
  * the build's precision; scale per output real from the generator: the
  * magnitude of its block, see tools/target/gen_common.hpp).
- * Routines tested on the target without vectors (tv_runner.c): se23_status_str.
+ * Routines tested on the target without vectors (names up to the first full
+ * stop; tools/target/se23_api.py reads them): se23_status_str (by
+ * tv_runner), and the navigation filter's se23_ins_setup, se23_ins_init,
+ * se23_ins_align, se23_ins_imu, se23_ins_gnss, se23_ins_state,
+ * se23_ins_take_factor, se23_ins_preset_foot and se23_ins_detector_threshold
+ * (by the image ins_replay of tests/target, which runs recorded sequences
+ * through the filter and compares with the host's double run at
+ * checkpoints, and compares the preset and the threshold with the host's
+ * on a few inputs; sequences and reference from tools/target/gen_ins_replay).
  */
 #include "se23/earth.h"
 #include "se23/gauss.h"

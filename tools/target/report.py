@@ -31,7 +31,8 @@ def main():
                    "tests/target/budgets/size.txt", variant)
         total = re.search(r"^total\s+(\d+)", size, re.M).group(1)
         stack = run(os.path.join(HERE, "stack_gate.py"), f"{build}/lib-{variant}",
-                    f"{build}/target/{variant}/tv_test.elf", "tests/target/budgets/stack.txt",
+                    f"{build}/target/{variant}/tv_test.elf,{build}/target/{variant}/ins_replay.elf",
+                    "tests/target/budgets/stack.txt",
                     variant)
         idx = header.index(f"{variant} (instructions)") - 1
         print(f"#### {title}\n")

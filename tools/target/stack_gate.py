@@ -1,12 +1,15 @@
 """Worst-case stack per public function of the se23 library on a Cortex-M
 target, including every callee, checked against a budget file.
 
-  stack_gate.py LIBDIR IMAGE BUDGET COLUMN [--include DIR]
+  stack_gate.py LIBDIR IMAGE[,IMAGE...] BUDGET COLUMN [--include DIR]
 
 LIBDIR   build/lib-<variant>: the library objects with their -fstack-usage
          (.su) and -fcallgraph-info=su (.ci) files.
-IMAGE    a linked image of the same variant (the target test image) holding
-         the newlib functions the library calls (sqrtf, sinf, memcpy, ...).
+IMAGE    linked images of the same variant (the target test images), comma-
+         separated, that together hold the newlib functions the library
+         calls (sqrtf, sinf, memcpy, __aeabi_l2f, ...): the vector image
+         links every routine but the navigation filter, the replay image
+         (ins_replay.elf) the filter.
 BUDGET   tests/target/budgets/stack.txt: "function column1 column2 ..." rows.
 COLUMN   the budget column (m4f-float, m7-double).
 
@@ -173,8 +176,8 @@ class Worst:
             name = fn.split(":")[-1]
             f = self.img.get(name)
             if f is None:
-                raise SystemExit(f"{fn}: not in the library and not in the image -- "
-                                 "link it into the target test image")
+                raise SystemExit(f"{fn}: not in the library and not in the images -- "
+                                 "link it into a target test image")
             if f["error"]:
                 raise SystemExit(f"{name} (newlib): {f['error']}")
             frame, callees = f["frame"], f["calls"]
@@ -217,7 +220,11 @@ def main():
 
     g = Graph()
     parse_ci(a.libdir, g)
-    worst = Worst(g, address_taken(a.libdir, g), parse_image(a.image))
+    image_funcs = {}
+    for image in a.image.split(","):
+        for name, f in parse_image(image).items():
+            image_funcs.setdefault(name, f)
+    worst = Worst(g, address_taken(a.libdir, g), image_funcs)
     budget = read_budget(a.budget, a.column)
     fails = 0
     print(f"{'function':30} {'own':>5} {'worst':>6} {'budget':>6}  deepest path ({a.column})")
