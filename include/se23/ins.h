@@ -332,6 +332,8 @@ typedef struct {
  * The chi^2_{6W-2} quantile / W of stationary.h for the standard normal
  * quantile z (Wilson-Hilferty): the detector threshold at which a window at
  * rest is called moving with the probability 1 - Phi(z).
+ * @return the threshold; no checks (window >= 1 and a moderate z are the
+ *         caller's: e.g. z = 2.326 for one window in 100).
  */
 se23_real_t se23_ins_detector_threshold(int window, se23_real_t z);
 
@@ -383,11 +385,28 @@ se23_status_t se23_ins_init(se23_ins_t *ins, int64_t t_ns, const se23_gauss_t *g
  */
 se23_status_t se23_ins_align(se23_ins_t *ins, const se23_ins_align_t *a);
 
-/** One raw IMU sample (gyro w_b [rad/s], specific force f_b [m/s^2]). */
+/**
+ * One raw IMU sample (gyro w_b [rad/s], specific force f_b [m/s^2]),
+ * screened, then integrated (file comment).
+ * @return SE23_INS_USED; or what became of it: SE23_INS_EARLY,
+ *         SE23_INS_NONFINITE, SE23_INS_RANGE, SE23_INS_DUPLICATE,
+ *         SE23_INS_OUT_OF_ORDER, SE23_INS_BAD_TIME (also t_ns < 0,
+ *         seq < 0), SE23_INS_BAD_DT, SE23_INS_OUTAGE (confirmed a jump or
+ *         a clock step), SE23_INS_FAILED (NULL argument, or a library
+ *         step failed: state kept), each counted.
+ */
 se23_ins_verdict_t se23_ins_imu(se23_ins_t *ins, int64_t t_ns, int64_t seq,
                                 const se23_vec3_t *w_b, const se23_vec3_t *f_b);
 
-/** One GNSS fix (file comment, "GNSS"). */
+/**
+ * One GNSS fix (file comment, "GNSS").
+ * @return SE23_INS_USED (fused now or at its own time), SE23_INS_PENDING
+ *         (ahead of the state: held), SE23_INS_RESET (gate recovery);
+ *         SE23_INS_EARLY, SE23_INS_NONFINITE (NaN/Inf, t_ns < 0, a sigma
+ *         <= 0 or > 1e6), SE23_INS_STALE (beyond the horizon or not after
+ *         the last fused fix), SE23_INS_GATED, SE23_INS_FAILED (NULL
+ *         argument or a failed update: state kept), each counted.
+ */
 se23_ins_verdict_t se23_ins_gnss(se23_ins_t *ins, const se23_ins_gnss_t *fix);
 
 /**
@@ -396,7 +415,10 @@ se23_ins_verdict_t se23_ins_gnss(se23_ins_t *ins, const se23_ins_gnss_t *fix);
  */
 se23_status_t se23_ins_state(const se23_ins_t *ins, se23_gauss_t *out, int64_t *t_ns);
 
-/** Takes the finished preintegrated factor, if any: returns 1, else 0. */
+/**
+ * Takes the finished preintegrated factor, if any.
+ * @return 1 (out written), or 0 (none ready, or a NULL argument).
+ */
 int se23_ins_take_factor(se23_ins_t *ins, se23_ins_factor_t *out);
 
 #ifdef __cplusplus
