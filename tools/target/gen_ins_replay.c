@@ -27,8 +27,8 @@
  * The generator refuses to write a reference (exit 1) unless the run keeps
  * away from every decision a rounding could flip: at rest, both of the
  * filter's rest tests (SHOE on the corrected readings, and the window's
- * mean acceleration against its covariance, recomputed here from the
- * filter's state and checked against every flag it set) at most half
+ * mean acceleration against its covariance, recomputed from the filter's
+ * state by gen_rest.c and checked against every flag it set) at most half
  * their thresholds; in motion, one of them at least twice its threshold;
  * every fix fused with a NIS (position + velocity, so each part too) below
  * half the gate. Its margins and the filter's error against the truth go to
@@ -42,6 +42,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "gen_rest.h"
 #include "ins_replay.h"
 #include "se23/earth.h"
 #include "se23/so3.h"
@@ -344,78 +345,6 @@ static int fixes(gen_seq_t *g)
     return n;
 }
 
-/* The quantile of the filter's mean-acceleration test at rest (src/ins.c,
- * ACCEL_TEST_Q: chi^2_3 at 0.999). */
-#define ACCEL_TEST_Q 16.27
-
-/*
- * The filter's second rest test (src/ins.c, accel_nis), recomputed in
- * double from its public state: a = R^T (fbar_n + g_n), fbar_n the mean of
- * the detector's window (the corrected readings in the nav frame), against
- * C = sigma_a^2 / W I + M P M^T, M = [-f^, I] on (phi, db_a), f the
- * corrected sample; R, P, b_a those before the sample's step (x). The
- * generator checks that this copy reproduces every flag the filter set.
- */
-static double accel_nis(const se23_ins_t *ins, const se23_gauss_t *x, const insr_imu_t *m)
-{
-    const se23_stationary_t *d = &ins->det;
-    const int W = d->cfg.window;
-    double R[3][3], f[3], a_n[3] = {0.0, 0.0, 0.0}, a[3], F[3][3], C[3][3], y[3];
-    double det, nis = 0.0;
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-            R[i][j] = x->T.R.m[i][j];
-        }
-        f[i] = m->f[i] + x->b_a.v[i];
-        for (int k = 0; k < W; ++k) {
-            a_n[i] += d->f[k].v[i] / W;
-        }
-        a_n[i] += ins->model.g_n.v[i];
-    }
-    for (int i = 0; i < 3; ++i) {
-        a[i] = R[0][i] * a_n[0] + R[1][i] * a_n[1] + R[2][i] * a_n[2];
-    }
-    memset(F, 0, sizeof F);
-    F[0][1] = -f[2];
-    F[0][2] = f[1];
-    F[1][0] = f[2];
-    F[1][2] = -f[0];
-    F[2][0] = -f[1];
-    F[2][1] = f[0];
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-            double c = (i == j) ? (double)d->cfg.sigma_a * d->cfg.sigma_a / W : 0.0;
-            for (int k = 0; k < 3; ++k) {
-                for (int l = 0; l < 3; ++l) {
-                    c += F[i][k] * x->P.m[SE23_GAUSS_NMAX * k + l] * F[j][l];
-                }
-                if (x->n == SE23_GAUSS_N_BIAS) {
-                    c -= F[i][k] * x->P.m[SE23_GAUSS_NMAX * k + SE23_IDX_BA + j];
-                    c -= F[j][k] * x->P.m[SE23_GAUSS_NMAX * k + SE23_IDX_BA + i];
-                }
-            }
-            if (x->n == SE23_GAUSS_N_BIAS) {
-                c += x->P.m[SE23_GAUSS_NMAX * (SE23_IDX_BA + i) + SE23_IDX_BA + j];
-            }
-            C[i][j] = c;
-        }
-    }
-    /* y = C^-1 a by the adjugate */
-    det = C[0][0] * (C[1][1] * C[2][2] - C[1][2] * C[2][1]) -
-          C[0][1] * (C[1][0] * C[2][2] - C[1][2] * C[2][0]) +
-          C[0][2] * (C[1][0] * C[2][1] - C[1][1] * C[2][0]);
-    for (int i = 0; i < 3; ++i) {
-        const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
-        y[i] = 0.0;
-        for (int j = 0; j < 3; ++j) {
-            const int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-            y[i] += (C[j1][i1] * C[j2][i2] - C[j1][i2] * C[j2][i1]) * a[j]; /* adj(C)[i][j] */
-        }
-        nis += a[i] * y[i] / det;
-    }
-    return nis;
-}
-
 static void hook(void *ctx, const se23_ins_t *ins, int k, int what, int verdict)
 {
     gen_seq_t *g = ctx;
@@ -443,11 +372,11 @@ static void hook(void *ctx, const se23_ins_t *ins, int k, int what, int verdict)
         }
         /* a live sample with a full window: both rest tests decided */
         if (verdict == SE23_INS_USED && full) {
-            const double n = accel_nis(ins, &g->prev, &g->imu[k]) / ACCEL_TEST_Q;
+            const double n = gen_accel_nis(ins, &g->prev, g->imu[k].f) / GEN_ACCEL_TEST_Q;
             const int flag = (ins->status & SE23_INS_ST_STATIONARY) != 0U;
             if (flag != (ins->det.stationary && n < 1.0)) {
                 fprintf(stderr, "%s: sample %d: the filter's rest flag %d, the generator's "
-                        "copy of its tests %d (update accel_nis)\n", g->name, k, flag,
+                        "copy of its tests %d (update gen_rest.c)\n", g->name, k, flag,
                         !flag);
                 g->bad++;
             }
