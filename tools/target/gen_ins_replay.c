@@ -42,6 +42,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "gen_print.h"
 #include "gen_rest.h"
 #include "ins_replay.h"
 #include "se23/earth.h"
@@ -487,99 +488,6 @@ static int build(gen_seq_t *g)
 
 /* ---- output ------------------------------------------------------------- */
 
-static void reals(const char *name, const se23_real_t *x, int n)
-{
-    printf(" .%s = {", name);
-    for (int i = 0; i < n; ++i) {
-        printf("%s%.17g", i ? ", " : "", (double)x[i]);
-    }
-    printf("},");
-}
-
-static void vec(const char *name, const se23_vec3_t *x)
-{
-    printf(" .%s = {.v = {%.17g, %.17g, %.17g}},", name, x->v[0], x->v[1], x->v[2]);
-}
-
-static void print_config(const se23_ins_config_t *c)
-{
-    const se23_imu_noise_t *n = &c->noise;
-    const se23_stationary_config_t *d = &c->detector;
-    printf("  .cfg = {\n");
-    printf("   .noise = {%.17g, %.17g, %.17g, %.17g},\n", n->gyro_noise, n->accel_noise,
-           n->gyro_walk, n->accel_walk);
-    printf("   .gyro_range = %.17g, .accel_range = %.17g, .lat = %.17g,\n", c->gyro_range,
-           c->accel_range, c->lat);
-    printf("   .earth_rotation = %d, .bias_states = %d, .dt_nominal = %.17g, .max_gap = %.17g,\n",
-           c->earth_rotation, c->bias_states, c->dt_nominal, c->max_gap);
-    printf("   .max_outage = %.17g, .outage_accel = %.17g, .outage_rate = %.17g,\n  ",
-           c->max_outage, c->outage_accel, c->outage_rate);
-    vec("lever_b", &c->lever_b);
-    printf("\n   .gnss_gate = %.17g, .gate_recover = %d, .delay_horizon = %.17g,\n", c->gnss_gate,
-           c->gate_recover, c->delay_horizon);
-    printf("   .preint_window = %.17g, .zupt = %d,\n", c->preint_window, c->zupt);
-    printf("   .detector = {%d, %.17g, %.17g, %.17g, %.17g},\n", d->window, d->sigma_a,
-           d->sigma_g, d->gravity, d->threshold);
-    printf("   .zupt_sigma_v = %.17g, .zaru_sigma_w = %.17g, .zaru_after = %.17g},\n",
-           c->zupt_sigma_v, c->zaru_sigma_w, c->zaru_after);
-}
-
-static void print_align(const se23_ins_align_t *a)
-{
-    printf("{");
-    vec("p_n", &a->p_n);
-    printf(" .sigma_p = %.17g, .yaw = %.17g, .sigma_yaw = %.17g, .gyrocompass = %d,\n"
-           "         .sigma_v = %.17g, .sigma_bg = %.17g, .sigma_ba = %.17g, .duration = %.17g},\n",
-           a->sigma_p, a->yaw, a->sigma_yaw, a->gyrocompass, a->sigma_v, a->sigma_bg,
-           a->sigma_ba, a->duration);
-}
-
-static void print_start(const insr_start_t *s)
-{
-    printf("  .start = {.align = %d,\n   .a = ", s->align);
-    print_align(&s->a);
-    printf("   .t0_ns = %lldLL,\n  ", (long long)s->t0_ns);
-    reals("phi", s->phi, 3);
-    reals("v", s->v, 3);
-    reals("p", s->p, 3);
-    reals("bg", s->bg, 3);
-    reals("ba", s->ba, 3);
-    printf("\n  ");
-    reals("P", s->P, 15);
-    printf("},\n");
-}
-
-static void print_check(const insr_check_t *o)
-{
-    const insr_factor_t *f = &o->fac;
-    printf(" {.at = %d, .t_ns = %lldLL, .status = 0x%03xU,\n  .c = {", o->at, (long long)o->t_ns,
-           (unsigned)o->status);
-    for (int i = 0; i < INSR_N_COUNTERS; ++i) {
-        printf("%s%uU", i ? ", " : "", (unsigned)o->c[i]);
-    }
-    printf("},\n  .factors = %d,\n  .fac = {.t0_ns = %lldLL, .t1_ns = %lldLL, .seq0 = %lldLL, "
-           ".n = %uU,\n  ",
-           o->factors, (long long)f->t0_ns, (long long)f->t1_ns, (long long)f->seq0,
-           (unsigned)f->n);
-    reals("dR", f->dR, 9);
-    printf("\n  ");
-    reals("dV", f->dV, 3);
-    reals("dX", f->dX, 3);
-    printf(" .dt = %.17g,\n  ", (double)f->dt);
-    reals("P", f->P, 9);
-    printf("},\n  ");
-    reals("R", o->R, 9);
-    printf("\n  ");
-    reals("v", o->v, 3);
-    reals("p", o->p, 3);
-    printf("\n  ");
-    reals("bg", o->bg, 3);
-    reals("ba", o->ba, 3);
-    printf("\n  ");
-    reals("P", o->P, 15);
-    printf("},\n");
-}
-
 static void print_seq(int s, const gen_seq_t *g)
 {
     printf("\n/* %s: %d IMU samples, %d fixes, %d checkpoints */\n", g->name, g->seq.n_imu,
@@ -601,7 +509,7 @@ static void print_seq(int s, const gen_seq_t *g)
     }
     printf("};\nstatic const insr_check_t check%d[%d] = {\n", s, g->seq.n_check);
     for (int j = 0; j < g->seq.n_check; ++j) {
-        print_check(&g->got[j]);
+        gen_print_check(&g->got[j]);
     }
     printf("};\n");
 }
@@ -630,9 +538,9 @@ static void print_presets(int corrupt)
         memset(&a, 0, sizeof a);
         st = se23_ins_preset_foot(rate, lat, &c, &a);
         printf(" {%.17g, %.17g, %d,\n", rate, lat, (int)st);
-        print_config(&c);
+        gen_print_config(&c);
         printf("  .align = ");
-        print_align(&a);
+        gen_print_align(&a);
         printf(" },\n");
     }
     printf("};\nconst int insr_n_presets = %d;\n", n);
@@ -682,8 +590,8 @@ int main(int argc, char **argv)
     printf("\nconst insr_seq_t insr_seqs[] = {\n");
     for (int s = 0; s < n; ++s) {
         printf(" {\"%s\",\n", seqs[s].name);
-        print_config(&seqs[s].seq.cfg);
-        print_start(&seqs[s].seq.start);
+        gen_print_config(&seqs[s].seq.cfg);
+        gen_print_start(&seqs[s].seq.start);
         printf("  imu%d, %d, fix%d, %d, check%d, %d},\n", s, seqs[s].seq.n_imu, s,
                seqs[s].seq.n_fix, s, seqs[s].seq.n_check);
     }
