@@ -34,7 +34,7 @@ TGT_CORRUPT := se23_so3_exp
 # tests/target/ins_replay_drive.c runs on both sides).
 TGT_INSR_GEN := $(TGT)/gen_ins_replay
 TGT_INSR_OBJS = $(TGT)/$(1)/ins_replay.o $(TGT)/$(1)/ins_replay_drive.o
-$(TGT_INSR_GEN): tools/target/gen_ins_replay.c tools/target/gen_rest.c tools/target/gen_rest.h \
+$(TGT_INSR_GEN): tools/target/gen_ins_replay.c \
                  tools/target/gen_print.c tools/target/gen_print.h \
                  tests/target/ins_replay_drive.c tests/target/ins_replay.h \
                  tests/support/se23_rng.c tests/support/se23_rng.h \

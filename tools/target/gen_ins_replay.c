@@ -28,7 +28,7 @@
  * away from every decision a rounding could flip: at rest, both of the
  * filter's rest tests (SHOE on the corrected readings, and the window's
  * mean acceleration against its covariance, recomputed from the filter's
- * state by gen_rest.c and checked against every flag it set) at most half
+ * state by insr_accel_nis and checked against every flag it set) at most half
  * their thresholds; in motion, one of them at least twice its threshold;
  * every fix fused with a NIS (position + velocity, so each part too) below
  * half the gate. Its margins and the filter's error against the truth go to
@@ -43,7 +43,6 @@
 #include <string.h>
 
 #include "gen_print.h"
-#include "gen_rest.h"
 #include "ins_replay.h"
 #include "se23/earth.h"
 #include "se23/so3.h"
@@ -373,11 +372,11 @@ static void hook(void *ctx, const se23_ins_t *ins, int k, int what, int verdict)
         }
         /* a live sample with a full window: both rest tests decided */
         if (verdict == SE23_INS_USED && full) {
-            const double n = gen_accel_nis(ins, &g->prev, g->imu[k].f) / GEN_ACCEL_TEST_Q;
+            const double n = insr_accel_nis(ins, &g->prev, g->imu[k].f) / INSR_ACCEL_TEST_Q;
             const int flag = (ins->status & SE23_INS_ST_STATIONARY) != 0U;
             if (flag != (ins->det.stationary && n < 1.0)) {
                 fprintf(stderr, "%s: sample %d: the filter's rest flag %d, the generator's "
-                        "copy of its tests %d (update gen_rest.c)\n", g->name, k, flag,
+                        "copy of its tests %d (update insr_accel_nis)\n", g->name, k, flag,
                         !flag);
                 g->bad++;
             }
