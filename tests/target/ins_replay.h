@@ -124,4 +124,21 @@ typedef void (*insr_hook_t)(void *ctx, const se23_ins_t *ins, int k, int what, i
 int insr_drive(const insr_seq_t *s, se23_ins_t *ins, insr_check_t *got, insr_hook_t hook,
                void *ctx);
 
+/** The quantile of the filter's mean-acceleration test at rest (src/ins.c,
+ *  ACCEL_TEST_Q: chi^2_3 at 0.999). */
+#define INSR_ACCEL_TEST_Q 16.27
+
+/**
+ * The filter's second rest test (src/ins.c, accel_nis) recomputed in double
+ * from its public state, for the generators (they check that it reproduces
+ * every rest flag the filter set and measure how far each decision lies
+ * from its threshold) and the walk image (its deviation from the host's):
+ * a = R^T (fbar_n + g_n), fbar_n the mean of the detector's window (the
+ * corrected readings in the nav frame), against
+ * C = sigma_a^2 / W I + M P M^T, M = [-f^, I] on (phi, db_a), f the
+ * corrected sample f_raw + b_a; R, P, b_a those before the sample's step
+ * (x), the window that after it (ins->det). Returns a^T C^-1 a.
+ */
+double insr_accel_nis(const se23_ins_t *ins, const se23_gauss_t *x, const se23_real_t f_raw[3]);
+
 #endif /* SE23_INS_REPLAY_H */
