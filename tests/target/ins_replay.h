@@ -40,7 +40,7 @@ typedef struct {
 } insr_factor_t;
 
 /** Number of counters (se23_ins_counters_t is uint32_t fields only). */
-#define INSR_N_COUNTERS 24
+#define INSR_N_COUNTERS 25
 /** Index of counter `field` of se23_ins_counters_t in insr_check_t.c. */
 #define INSR_CIDX(field) ((int)(offsetof(se23_ins_counters_t, field) / sizeof(uint32_t)))
 
@@ -100,13 +100,27 @@ extern const insr_threshold_t insr_thresholds[];
 extern const int insr_n_thresholds;
 
 /** Reals and integers of a configuration with its alignment request. */
-#define INSR_FLAT_REALS 35
+#define INSR_FLAT_REALS 37
 #define INSR_FLAT_INTS 6
 
 /** r, iv = every real and every integer field of c and a, in a fixed
  *  order (for field-by-field comparisons). */
 void insr_flatten(const se23_ins_config_t *c, const se23_ins_align_t *a,
                   se23_real_t r[INSR_FLAT_REALS], int iv[INSR_FLAT_INTS]);
+
+/** The names of se23_ins_counters_t's fields, in field order. */
+extern const char *const insr_counter_name[INSR_N_COUNTERS];
+
+/** |got - ref| / |ref| in double (0 for two zeros, 1e30 for NaN or a
+ *  nonzero against zero). */
+double insr_rel_dev(se23_real_t got, se23_real_t ref);
+
+/** The fields of (c, a) that differ from (c_ref, a_ref): integers exactly,
+ *  reals beyond tol relative (insr_rel_dev); *worst takes the largest real
+ *  deviation, *same is cleared if a real differs at all. */
+int insr_config_diff(const se23_ins_config_t *c, const se23_ins_align_t *a,
+                     const se23_ins_config_t *c_ref, const se23_ins_align_t *a_ref,
+                     double tol, double *worst, int *same);
 
 /** Called by insr_drive after every input: what 0 after IMU sample k (its
  *  verdict), 1 after a fix delivered at k (its verdict). */

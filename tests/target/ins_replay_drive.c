@@ -154,11 +154,56 @@ void insr_flatten(const se23_ins_config_t *c, const se23_ins_align_t *a,
         c->gnss_gate, c->delay_horizon, c->preint_window, c->detector.sigma_a,
         c->detector.sigma_g, c->detector.gravity, c->detector.threshold, c->zupt_sigma_v,
         c->zaru_sigma_w, c->zaru_after, a->p_n.v[0], a->p_n.v[1], a->p_n.v[2], a->sigma_p,
-        a->yaw, a->sigma_yaw, a->sigma_v, a->sigma_bg, a->sigma_ba, a->duration};
+        a->yaw, a->sigma_yaw, a->sigma_v, a->sigma_bg, a->sigma_ba, a->duration,
+        a->course_speed, a->course_sigma};
     const int ints[INSR_FLAT_INTS] = {c->earth_rotation, c->bias_states, c->gate_recover,
                                       c->zupt, c->detector.window, a->gyrocompass};
     memcpy(r, reals, sizeof reals);
     memcpy(iv, ints, sizeof ints);
+}
+
+const char *const insr_counter_name[INSR_N_COUNTERS] = {
+    "imu_used",       "imu_early",   "imu_align",   "imu_nonfinite",  "imu_range",
+    "imu_duplicate",  "imu_out_of_order", "imu_bad_time", "imu_bad_dt", "imu_missing",
+    "imu_seq_jumps",  "gnss_used",   "gnss_delayed", "gnss_pending_dropped",
+    "gnss_nonfinite", "gnss_early",  "gnss_stale",  "gnss_gated",     "gate_resets",
+    "course_headings", "zupt_used",  "zaru_used",   "time_resets",    "filter_errors",
+    "init_rejected"};
+
+/* se23_ins_counters_t must be exactly the INSR_N_COUNTERS uint32_t named above. */
+typedef char insr_counters_are_uint32[(sizeof(se23_ins_counters_t) ==
+                                       INSR_N_COUNTERS * sizeof(uint32_t)) ? 1 : -1];
+
+double insr_rel_dev(se23_real_t got, se23_real_t ref)
+{
+    const double d = (double)got - (double)ref;
+    const double a = d < 0.0 ? -d : d;
+    const double r = (double)ref < 0.0 ? -(double)ref : (double)ref;
+    if (!(a == a)) {
+        return 1e30;
+    }
+    return r > 0.0 ? a / r : (a > 0.0 ? 1e30 : 0.0);
+}
+
+int insr_config_diff(const se23_ins_config_t *c, const se23_ins_align_t *a,
+                     const se23_ins_config_t *c_ref, const se23_ins_align_t *a_ref,
+                     double tol, double *worst, int *same)
+{
+    se23_real_t r[INSR_FLAT_REALS], rr[INSR_FLAT_REALS];
+    int iv[INSR_FLAT_INTS], ir[INSR_FLAT_INTS];
+    int bad = 0, i;
+    insr_flatten(c, a, r, iv);
+    insr_flatten(c_ref, a_ref, rr, ir);
+    for (i = 0; i < INSR_FLAT_INTS; ++i) {
+        bad += iv[i] != ir[i];
+    }
+    for (i = 0; i < INSR_FLAT_REALS; ++i) {
+        const double d = insr_rel_dev(r[i], rr[i]);
+        *same &= r[i] == rr[i];
+        *worst = d > *worst ? d : *worst;
+        bad += !(d <= tol);
+    }
+    return bad;
 }
 
 double insr_accel_nis(const se23_ins_t *ins, const se23_gauss_t *x, const se23_real_t f_raw[3])

@@ -102,15 +102,6 @@ static const int rel[N_GROUPS] = {0, 0, 0, 0, 0, 1, 2, 2, 0};
 #define PRESET_TOL 1e-6
 #endif
 
-static const char *const counter_name[INSR_N_COUNTERS] = {
-    "imu_used", "imu_early", "imu_align", "imu_nonfinite", "imu_range", "imu_duplicate",
-    "imu_out_of_order", "imu_bad_time", "imu_bad_dt", "imu_missing", "imu_seq_jumps",
-    "gnss_used", "gnss_delayed", "gnss_pending_dropped", "gnss_nonfinite", "gnss_early",
-    "gnss_stale", "gnss_gated", "gate_resets", "zupt_used", "zaru_used", "time_resets",
-    "filter_errors", "init_rejected"};
-
-typedef char counters_are_uint32[(sizeof(se23_ins_counters_t) ==
-                                  INSR_N_COUNTERS * sizeof(uint32_t)) ? 1 : -1];
 
 static se23_ins_t ins;              /* large: static */
 static insr_check_t got[WALK_CHECK_MAX];
@@ -264,7 +255,7 @@ static int check(int j, const insr_check_t *o, const insr_check_t *ref)
     }
     for (i = 0; i < INSR_N_COUNTERS; ++i) {
         if (o->c[i] != ref->c[i]) {
-            printf("FAIL sample %d: counter %s = %u, expected %u\n", ref->at, counter_name[i],
+            printf("FAIL sample %d: counter %s = %u, expected %u\n", ref->at, insr_counter_name[i],
                    (unsigned)o->c[i], (unsigned)ref->c[i]);
             ++fails;
         }
@@ -367,26 +358,13 @@ static int check_closure(const walk_ctx_t *w)
     return fails;
 }
 
-static double rel_dev(se23_real_t a, se23_real_t ref)
-{
-    const double d = (double)a - (double)ref;
-    const double m = d < 0.0 ? -d : d;
-    const double r = (double)ref < 0.0 ? -(double)ref : (double)ref;
-    if (!(m == m)) {
-        return 1e30;
-    }
-    return r > 0.0 ? m / r : (m > 0.0 ? 1e30 : 0.0);
-}
-
 /* se23_ins_preset_foot on the target against the configuration replayed. */
 static int check_preset(void)
 {
     static se23_ins_config_t cfg; /* static: kept off the stack */
     se23_ins_align_t al;
-    se23_real_t r[INSR_FLAT_REALS], rr[INSR_FLAT_REALS];
-    int iv[INSR_FLAT_INTS], ir[INSR_FLAT_INTS];
     double worst = 0.0;
-    int bad = 0, same = 1, i;
+    int bad, same = 1;
     memset(&cfg, 0, sizeof cfg);
     memset(&al, 0, sizeof al);
     if (se23_ins_preset_foot(walk_ref.rate_hz, walk_ref.lat, &cfg, &al) != SE23_OK) {
@@ -394,17 +372,8 @@ static int check_preset(void)
                (double)walk_ref.lat);
         return 1;
     }
-    insr_flatten(&cfg, &al, r, iv);
-    insr_flatten(&walk_ref.seq.cfg, &walk_ref.seq.start.a, rr, ir);
-    for (i = 0; i < INSR_FLAT_INTS; ++i) {
-        bad += iv[i] != ir[i];
-    }
-    for (i = 0; i < INSR_FLAT_REALS; ++i) {
-        const double d = rel_dev(r[i], rr[i]);
-        same &= r[i] == rr[i];
-        worst = d > worst ? d : worst;
-        bad += !(d <= PRESET_TOL);
-    }
+    bad = insr_config_diff(&cfg, &al, &walk_ref.seq.cfg, &walk_ref.seq.start.a, PRESET_TOL,
+                           &worst, &same);
     printf("preset    se23_ins_preset_foot(%g, %.9g) on the target: %s the host's (worst %.2e "
            "relative, tol %.0e)  %s\n",
            (double)walk_ref.rate_hz, (double)walk_ref.lat, same ? "identical to" : "close to",
@@ -417,7 +386,6 @@ int main(void)
     static walk_ctx_t ctx;
     const insr_seq_t *q = &walk_ref.seq;
     int fails = 0, bad, j;
-    (void)sizeof(counters_are_uint32);
     printf("se23 walk replay (x-io foot-mounted walk, %d samples, %.1f s), %s build, against "
            "the host's %s run\n",
            q->n_imu, (double)q->imu[q->n_imu - 1].t_ns * 1e-9,
