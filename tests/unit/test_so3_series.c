@@ -143,6 +143,12 @@ static void test_so3_series_coeffs_match_closed_forms(void **state)
      * float 1.25 / 1.56 / 1.47 / 1.72 / 2.50 / 1.74 / 1.76 eps), bounded
      * at about 1.5 times that. A dropped series term (e.g. the ninth Horner
      * term of c1: 15.3 eps near theta = 1) fails here. */
+    if (SE23_CFG_DOUBLE && (reference_eps() > 1e-17)) {
+        /* long double computed in double (valgrind): the reference cannot
+         * resolve these bounds; the native runs (sanitizer trees) check them */
+        print_message("reference without extended precision: tight bounds not checked\n");
+        return;
+    }
 #if SE23_CFG_DOUBLE
     const double reached[7] = {1.5, 2.7, 2.9, 16.0, 4.3, 12.9, 3.1};
 #else
