@@ -74,7 +74,9 @@ static se23_status_t config_check(const se23_ins_config_t *cfg)
     if ((cfg->zupt != 0) && (cfg->zupt_sigma_v <= SE23_R(0))) {
         return SE23_ERR_DOMAIN;
     }
-    if ((cfg->dt_nominal <= SE23_R(0)) || (cfg->max_gap < cfg->dt_nominal) ||
+    /* below 1 ns (the clock's resolution) max_gap / dt_nominal would not
+     * fit the int64 of max_missing */
+    if ((cfg->dt_nominal < SE23_R(1e-9)) || (cfg->max_gap < cfg->dt_nominal) ||
         (cfg->max_gap > SE23_R(SE23_CFG_DT_MAX))) {
         return SE23_ERR_DT;
     }

@@ -35,6 +35,9 @@ static void m_zero_range(se23_ins_config_t *c) { c->gyro_range = SE23_R(0); }
 static void m_lat(se23_ins_config_t *c) { c->lat = SE23_R(2); }
 static void m_flag(se23_ins_config_t *c) { c->bias_states = 2; }
 static void m_dt(se23_ins_config_t *c) { c->dt_nominal = SE23_R(0); }
+/* Regression (fuzz_ins): max_gap / dt_nominal beyond int64 was converted to
+ * max_missing (undefined behaviour); below 1 ns dt_nominal is refused. */
+static void m_dt_tiny(se23_ins_config_t *c) { c->dt_nominal = (se23_real_t)1e-30; }
 static void m_gap(se23_ins_config_t *c) { c->max_gap = SE23_R(2); }
 static void m_gap_small(se23_ins_config_t *c) { c->max_gap = (se23_real_t)1e-3; }
 static void m_outage(se23_ins_config_t *c) { c->max_outage = SE23_R(1e4); }
@@ -54,6 +57,7 @@ static void test_setup_rejects_each_bad_field_and_writes_nothing(void **state)
         {m_nan_noise, SE23_ERR_NONFINITE}, {m_neg_noise, SE23_ERR_DOMAIN},
         {m_zero_range, SE23_ERR_DOMAIN},   {m_lat, SE23_ERR_DOMAIN},
         {m_flag, SE23_ERR_DOMAIN},         {m_dt, SE23_ERR_DT},
+        {m_dt_tiny, SE23_ERR_DT},
         {m_gap, SE23_ERR_DT},              {m_gap_small, SE23_ERR_DT},
         {m_outage, SE23_ERR_DOMAIN},       {m_ring, SE23_ERR_DIM},
         {m_recover, SE23_ERR_DOMAIN},      {m_zupt_sigma, SE23_ERR_DOMAIN},
@@ -78,6 +82,12 @@ static void test_setup_rejects_each_bad_field_and_writes_nothing(void **state)
         assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
         c.delay_horizon = (se23_real_t)((SE23_INS_RING - 1) / (2.0 * IT_RATE));
         assert_int_equal(se23_ins_setup(&c, &ins), SE23_ERR_DIM);
+        /* dt_nominal's limit, both sides: 1 ns. */
+        c.delay_horizon = SE23_R(0);
+        c.dt_nominal = SE23_R(1e-9);
+        assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
+        c.dt_nominal = SE23_R(0.99e-9);
+        assert_int_equal(se23_ins_setup(&c, &ins), SE23_ERR_DT);
     }
 }
 
