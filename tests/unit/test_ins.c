@@ -236,6 +236,35 @@ static void test_every_fix_ends_in_one_counter(void **state)
     assert_true((ins.status & SE23_INS_ST_GNSS_AIDED) != 0);
 }
 
+/* Regression (fuzz_ins, UBSan): a state near INT64_MAX ns (any t >= 0 is
+ * a valid time) made the fix screening compute t_ns + half a sample,
+ * a signed overflow (undefined behaviour). The fixes are judged as at
+ * any other time: a fix 10 ms ahead is held, then fused when its sample
+ * arrives. */
+static void test_fixes_near_the_end_of_time(void **state)
+{
+    (void)state;
+    se23_ins_config_t c;
+    se23_gauss_t g;
+    se23_ins_gnss_t fix;
+    const double p0[3] = {0, 0, 0};
+    const long long t0 = INT64_MAX - 2 * IT_DT_NS;
+    it_config(&c, 1);
+    assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
+    it_initial(15, 1e-3, 0.1, 1.0, &g);
+    assert_int_equal(se23_ins_init(&ins, t0, &g), SE23_OK);
+    it_fix(INT64_MAX, p0, 1.0, &fix);
+    assert_int_equal(se23_ins_gnss(&ins, &fix), SE23_INS_PENDING);
+    assert_int_equal(it_run_rest(&ins, NULL, NULL, t0, 0, 1), 1); /* 5 ms to go: held */
+    assert_int_equal(ins.have_pending, 1);
+    assert_int_equal(it_run_rest(&ins, NULL, NULL, t0 + IT_DT_NS, 1, 1), 1); /* due */
+    assert_int_equal(ins.have_pending, 0);
+    assert_int_equal(ins.c.gnss_used, 1);
+    assert_int_equal(ins.t_ns, INT64_MAX);
+    it_fix(INT64_MAX, p0, 1.0, &fix); /* not after the last fused fix */
+    assert_int_equal(se23_ins_gnss(&ins, &fix), SE23_INS_STALE);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -244,6 +273,7 @@ int main(void)
         cmocka_unit_test(test_every_sample_ends_in_one_counter),
         cmocka_unit_test(test_counters_saturate),
         cmocka_unit_test(test_every_fix_ends_in_one_counter),
+        cmocka_unit_test(test_fixes_near_the_end_of_time),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
