@@ -194,6 +194,11 @@ static se23_status_t correct(const se23_preint_unc_t *fu,
         }
         se23_compose(&fu->f.delta, &E, &r.delta);
     }
+    /* Finite Deltas, Jacobians and biases can still overflow: b - bbar,
+     * J db, Delta V + dV/db db. */
+    if (!se23_pose_finite(&r.delta)) {
+        return SE23_ERR_NONFINITE;
+    }
     /* The retraction keeps R in SO(3) to rounding, so that an SE23_OK
      * output is always a valid input (one step: Delta R passed the check,
      * its drift is at most SE23_CFG_ROT_TOL). */

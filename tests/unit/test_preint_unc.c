@@ -662,6 +662,9 @@ static void test_preint_unc_correct_rejects_bad_bias_untouched(void **state)
     bg.v[0] = SE23_R(3e38);
 #endif
     assert_int_equal(se23_preint_unc_correct(&fu, &bg, &ba, &out), SE23_ERR_NONFINITE);
+    /* Regression (fuzz_preint_unc): the classical correction of the same
+     * bias (dV/dbg db_g beyond the largest real) gave Inf with SE23_OK. */
+    assert_int_equal(se23_preint_unc_correct_classic(&fu, &bg, &ba, &out), SE23_ERR_NONFINITE);
     assert_memory_equal(&out, &out0, sizeof out);
 }
 
