@@ -16,6 +16,13 @@
 #endif
 /* Added to the PSD shift of the check so that the zero matrix passes. */
 #define TINY SE23_R(FLT_MIN)
+/* Above this largest variance the check factors A / 4 (exact: a power of
+ * two), so that A_ii + tol s cannot overflow; the tests are scale-free. */
+#if SE23_CFG_DOUBLE
+#define SCALE_ABOVE SE23_R(DBL_MAX / 4)
+#else
+#define SCALE_ABOVE SE23_R(FLT_MAX / 4)
+#endif
 
 int se23_cov_chol_packed(se23_real_t *L, int n)
 {
@@ -61,7 +68,9 @@ se23_status_t se23_cov_check_work(const se23_real_t *A, int n, int stride,
     if (!se23_is_finite(bad)) {
         return SE23_ERR_NONFINITE;
     }
-    const se23_real_t tol = SE23_R(SE23_CFG_COV_TOL) * s, shift = tol + TINY;
+    const se23_real_t tol = SE23_R(SE23_CFG_COV_TOL) * s;
+    const se23_real_t k = (s > SCALE_ABOVE) ? SE23_R(0.25) : SE23_R(1);
+    const se23_real_t shift = (k * tol) + TINY;
     se23_real_t *li = work;
     for (int i = 0; i < n; ++i) {
         const se23_real_t *a = &A[stride * i];
@@ -69,9 +78,9 @@ se23_status_t se23_cov_check_work(const se23_real_t *A, int n, int stride,
             if (se23_fabs(a[j] - A[stride * j + i]) > tol) {
                 return SE23_ERR_NOT_SYMMETRIC;
             }
-            li[j] = a[j];
+            li[j] = k * a[j];
         }
-        li[i] = a[i] + shift;
+        li[i] = (k * a[i]) + shift;
         li = &li[i + 1];
     }
     return se23_cov_chol_packed(work, n) ? SE23_OK : SE23_ERR_NOT_PSD;

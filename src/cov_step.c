@@ -269,6 +269,17 @@ static void bias_blocks(step_t *s)
     }
 }
 
+int se23_input_blocks_finite(const se23_input_blocks_t *Bt)
+{
+    int ok = 1;
+    for (int i = PHI; i <= RHO; ++i) {
+        for (int k = GYR; k <= ACC; ++k) {
+            ok = ok && se23_all_finite(&Bt->blk[i][k].m[0][0], 9);
+        }
+    }
+    return ok;
+}
+
 se23_real_t se23_input_blocks_row_sum(const se23_input_blocks_t *Bt)
 {
     se23_real_t b = SE23_R(0);
@@ -367,6 +378,18 @@ static void blk_load_sym(const se23_real_t *P, int stride, int a, int b,
         blk_load(P, stride, 3 * b, 3 * a, A);
         se23_m3_transpose(A, A);
     }
+}
+
+int se23_cov_nu_shear_fits(const se23_vec3_t *a, int n, const se23_real_t *P, int stride)
+{
+    se23_real_t d = SE23_R(0); /* largest variance (P_ii >= 0, trusted) */
+    for (int i = 0; i < n; ++i) {
+        const se23_real_t x = P[stride * i + i];
+        d = (x > d) ? x : d;
+    }
+    const se23_real_t s =
+        SE23_R(1) + se23_fabs(a->v[0]) + se23_fabs(a->v[1]) + se23_fabs(a->v[2]);
+    return (d * s * s) <= SE23_COV_STEP_MAX; /* NaN fails */
 }
 
 void se23_cov_nu_shear(const se23_vec3_t *a, int n, const se23_real_t *P,

@@ -64,6 +64,11 @@ int se23_cov_step_fits(const se23_pose_t *U, se23_real_t dt, se23_real_t b,
                        const se23_step_noise_t *q, int n, const se23_real_t *P,
                        int stride);
 
+/** Nonzero if every entry of Bt is finite: for huge rates or forces the
+ *  products inside se23_input_blocks can overflow although the bound of
+ *  se23_input_blocks_bound, which assumes exact arithmetic, is finite. */
+int se23_input_blocks_finite(const se23_input_blocks_t *Bt);
+
 /** The largest absolute row sum of Bt (45 entries). */
 se23_real_t se23_input_blocks_row_sum(const se23_input_blocks_t *Bt);
 
@@ -88,6 +93,12 @@ se23_real_t se23_input_blocks_bound(const se23_vec3_t *f, se23_real_t dt);
 void se23_cov_step(const se23_pose_t *U, se23_real_t dt,
                    const se23_input_blocks_t *Bt, const se23_step_noise_t *q,
                    int n, const se23_real_t *P, se23_real_t *out, int stride);
+
+/** Nonzero if every entry of se23_cov_nu_shear's result stays finite:
+ *  with d = max_i P_ii (P PSD, so |P_ij| <= d) each entry of M P M^T is
+ *  at most d (1 + |a|_1)^2, which must stay 64 times below the largest
+ *  real. O(n). */
+int se23_cov_nu_shear_fits(const se23_vec3_t *a, int n, const se23_real_t *P, int stride);
 
 /**
  * out = M P M^T, M = I + [[0, 0, 0], [0, 0, a^], [0, 0, 0]] (identity on

@@ -127,6 +127,9 @@ se23_status_t se23_gauss_input_noise(const se23_mat9x6_t *B,
     }
     se23_mat9_t out = {{SE23_R(0)}};
     add_input_noise(B, q.qg, q.qa, out.m, 9);
+    if (!se23_all_finite(out.m, 81)) {
+        return SE23_ERR_NONFINITE; /* a finite B N B^T can still overflow */
+    }
     *Q = out;
     return SE23_OK;
 }
@@ -277,9 +280,10 @@ se23_status_t se23_gauss_predict(const se23_earth_model_t *model,
     }
     se23_input_blocks_t Bt;
     se23_input_blocks(kind, &parts, &U.R, &c.f_b, c.dt, &Bt);
-    if (!se23_cov_step_fits(&U, c.dt, se23_input_blocks_bound(&c.f_b, c.dt), &q, g->n,
+    if (!se23_input_blocks_finite(&Bt) ||
+        !se23_cov_step_fits(&U, c.dt, se23_input_blocks_bound(&c.f_b, c.dt), &q, g->n,
                             g->P.m, S)) {
-        return SE23_ERR_NONFINITE; /* P+ would overflow */
+        return SE23_ERR_NONFINITE; /* B_k or P+ would overflow */
     }
     /* Nothing fails from here on (the covariance step reads only g->P). */
     se23_cov_step(&U, c.dt, &Bt, &q, g->n, g->P.m, out->P.m, S);
@@ -313,6 +317,10 @@ static se23_status_t convert(const se23_earth_model_t *model,
         se23_imu_user_from_carried(model, &g->T, &T);
     } else {
         se23_imu_carried_from_user(model, &g->T, &T);
+    }
+    /* A finite Omega x p or M P M^T can still overflow. */
+    if (!se23_pose_finite(&T) || !se23_cov_nu_shear_fits(&a, g->n, g->P.m, S)) {
+        return SE23_ERR_NONFINITE;
     }
     se23_cov_nu_shear(&a, g->n, g->P.m, out->P.m, S);
     out->T = T;

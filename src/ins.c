@@ -74,7 +74,9 @@ static se23_status_t config_check(const se23_ins_config_t *cfg)
     if ((cfg->zupt != 0) && (cfg->zupt_sigma_v <= SE23_R(0))) {
         return SE23_ERR_DOMAIN;
     }
-    if ((cfg->dt_nominal <= SE23_R(0)) || (cfg->max_gap < cfg->dt_nominal) ||
+    /* below 1 ns (the clock's resolution) max_gap / dt_nominal would not
+     * fit the int64 of max_missing */
+    if ((cfg->dt_nominal < SE23_R(1e-9)) || (cfg->max_gap < cfg->dt_nominal) ||
         (cfg->max_gap > SE23_R(SE23_CFG_DT_MAX))) {
         return SE23_ERR_DT;
     }
@@ -309,7 +311,8 @@ static se23_ins_verdict_t not_after(se23_ins_t *ins, int64_t t_ns, int64_t seq)
 /* A pending fix whose time the state has reached is fused. */
 static void service_pending(se23_ins_t *ins)
 {
-    if ((ins->have_pending != 0) && (ins->pending.t_ns <= ins->t_ns + ins->half_ns)) {
+    /* t_ns - half_ns: t_ns + half_ns can overflow near INT64_MAX */
+    if ((ins->have_pending != 0) && (ins->pending.t_ns - ins->half_ns <= ins->t_ns)) {
         ins->have_pending = 0;
         (void)se23_ins_gnss(ins, &ins->pending);
     }
@@ -531,7 +534,9 @@ se23_ins_verdict_t se23_ins_gnss(se23_ins_t *ins, const se23_ins_gnss_t *fix)
         se23_ins_count(&ins->c.gnss_nonfinite);
         return SE23_INS_NONFINITE;
     }
-    if (fix->t_ns > ins->t_ns + ins->half_ns) { /* ahead: waits for the state */
+    /* ahead: waits for the state (fix->t_ns >= 0: the difference cannot
+     * overflow, ins->t_ns + half_ns could) */
+    if (fix->t_ns - ins->half_ns > ins->t_ns) {
         if (ins->have_pending != 0) {
             se23_ins_count(&ins->c.gnss_pending_dropped);
         }

@@ -2,6 +2,7 @@
 #include "se23/preint.h"
 
 #include "argcheck.h"
+#include "linalg.h"
 #include "se23/se23.h"
 #include "se23_math.h"
 
@@ -47,7 +48,13 @@ se23_status_t se23_preint_add(se23_preint_t *f, const se23_imu_sample_t *s)
     if (st != SE23_OK) {
         return st;
     }
-    se23_preint_add_increment(f, &ups, s->dt);
+    se23_preint_t next = *f;
+    se23_preint_add_increment(&next, &ups, s->dt);
+    /* Finite Deltas near the largest real can still overflow. */
+    if (!se23_pose_finite(&next.delta) || !se23_is_finite(next.dt)) {
+        return SE23_ERR_NONFINITE;
+    }
+    *f = next;
     return SE23_OK;
 }
 
@@ -73,7 +80,14 @@ se23_status_t se23_preint_predict_carried(const se23_earth_model_t *model,
     if (st != SE23_OK) {
         return st;
     }
-    se23_imu_transition(&gamma, Tc_i, &f->delta, f->dt, Tc_j);
+    se23_pose_t next;
+    se23_imu_transition(&gamma, Tc_i, &f->delta, f->dt, &next);
+    /* Finite inputs can still overflow (a state, Deltas or Delta t near the
+     * largest real): refuse instead of returning Inf with SE23_OK. */
+    if (!se23_pose_finite(&next)) {
+        return SE23_ERR_NONFINITE;
+    }
+    *Tc_j = next;
     return SE23_OK;
 }
 
@@ -90,6 +104,11 @@ se23_status_t se23_preint_predict(const se23_earth_model_t *model,
     if (st != SE23_OK) {
         return st;
     }
-    se23_imu_user_from_carried(model, &Tc, T_j);
+    se23_pose_t user;
+    se23_imu_user_from_carried(model, &Tc, &user);
+    if (!se23_pose_finite(&user)) {
+        return SE23_ERR_NONFINITE; /* v' - Omega x p overflowed */
+    }
+    *T_j = user;
     return SE23_OK;
 }

@@ -125,10 +125,10 @@ se23_status_t se23_preint_unc_add(se23_preint_unc_t *fu,
     se23_imu_increment_parts(&c, &U, &parts);
     se23_input_blocks(fu->kind, &parts, &U.R, &c.f_b, c.dt, &Bt);
     if (!se23_all_finite(&U.R.m[0][0], 9) || !se23_all_finite(U.v.v, 3) ||
-        !se23_all_finite(U.p.v, 3) ||
+        !se23_all_finite(U.p.v, 3) || !se23_input_blocks_finite(&Bt) ||
         !se23_cov_step_fits(&U, c.dt, se23_input_blocks_bound(&c.f_b, c.dt), &q,
                             SE23_GAUSS_N_POSE, fu->P.m, 9)) {
-        return SE23_ERR_NONFINITE; /* the increment or P+ would overflow */
+        return SE23_ERR_NONFINITE; /* the increment, B_k or P+ would overflow */
     }
     /* Nothing below can fail: update in place. */
     se23_cov_step(&U, c.dt, &Bt, &q, SE23_GAUSS_N_POSE, fu->P.m, fu->P.m, 9);
@@ -193,6 +193,11 @@ static se23_status_t correct(const se23_preint_unc_t *fu,
             return st;
         }
         se23_compose(&fu->f.delta, &E, &r.delta);
+    }
+    /* Finite Deltas, Jacobians and biases can still overflow: b - bbar,
+     * J db, Delta V + dV/db db. */
+    if (!se23_pose_finite(&r.delta)) {
+        return SE23_ERR_NONFINITE;
     }
     /* The retraction keeps R in SO(3) to rounding, so that an SE23_OK
      * output is always a valid input (one step: Delta R passed the check,

@@ -169,6 +169,10 @@ se23_status_t se23_log(const se23_pose_t *T, se23_tangent_t *xi)
     se23_vec3_t rho;
     se23_m3_mul_v3(&Jinv, &T->v, &nu);
     se23_m3_mul_v3(&Jinv, &T->p, &rho);
+    /* |J_l^-1| exceeds 1: a v or p near the largest real can overflow. */
+    if (!se23_all_finite(nu.v, 3) || !se23_all_finite(rho.v, 3)) {
+        return SE23_ERR_NONFINITE;
+    }
     se23_v3_store(&phi, &xi->v[SE23_IDX_PHI]);
     se23_v3_store(&nu, &xi->v[SE23_IDX_NU]);
     se23_v3_store(&rho, &xi->v[SE23_IDX_RHO]);

@@ -173,7 +173,8 @@ se23_status_t se23_gauss_input_jac(se23_input_jac_kind_t kind,
  * Q = Sigma_eta = B N B^T with N = diag(sg^2/dt I3, sa^2/dt I3) (file
  * comment: sample-averaged white noise), exactly symmetric. Only the white
  * noise densities of the noise model are used.
- * @return SE23_ERR_NONFINITE, SE23_ERR_DT (dt <= 0 or > SE23_CFG_DT_MAX), or
+ * @return SE23_ERR_NONFINITE (NaN/Inf in B or noise, or a Q that would
+ *         overflow), SE23_ERR_DT (dt <= 0 or > SE23_CFG_DT_MAX), or
  *         SE23_ERR_DOMAIN if a density is negative.
  */
 se23_status_t se23_gauss_input_noise(const se23_mat9x6_t *B,
@@ -256,7 +257,12 @@ se23_status_t se23_gauss_predict(const se23_earth_model_t *model,
  * first order, xi = M xi' with
  *   M = [[I, 0, 0], [0, I, -(Rbar^T Omega)^], [0, 0, I]]
  * (identity on the bias block), P = M P' M^T, exactly symmetric.
- * @return the statuses of se23_gauss_check, SE23_ERR_NONFINITE (Omega).
+ * The state g is trusted (types.h, "Validation policy"): only g->n is
+ * checked, unless SE23_CFG_DEEP_CHECKS.
+ * @return SE23_ERR_DIM (n), SE23_ERR_NONFINITE (Omega, or a mean or P
+ *         that would overflow: Omega x p or M P M^T beyond the largest
+ *         real); with SE23_CFG_DEEP_CHECKS the statuses of
+ *         se23_gauss_check.
  */
 se23_status_t se23_gauss_from_carried(const se23_earth_model_t *model,
                                       const se23_gauss_t *g,

@@ -367,7 +367,7 @@ se23_status_t se23_ins_preset_foot(se23_real_t rate_hz, se23_real_t lat,
  *         SE23_ERR_DOMAIN (a negative noise, range, sigma or gate;
  *         max_outage above SE23_INS_MAX_OUTAGE; |lat| > pi/2;
  *         bias_states, earth_rotation or zupt not 0/1); SE23_ERR_DT
- *         (dt_nominal <= 0, max_gap below dt_nominal or above
+ *         (dt_nominal below 1 ns, max_gap below dt_nominal or above
  *         SE23_CFG_DT_MAX); SE23_ERR_DIM (the ring cannot hold
  *         2 * delay_horizon / dt_nominal + 2 samples); the statuses of
  *         se23_stationary_init when zupt is set. Nothing is written on error.

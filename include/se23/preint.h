@@ -65,7 +65,8 @@ void se23_preint_reset(se23_preint_t *f);
 /**
  * Adds one sample: f.delta <- Phi_dt(f.delta) Upsilon(s), f.dt += s.dt,
  * f.n += 1 (exact for a zero-order-hold sample).
- * @return SE23_ERR_NONFINITE (NaN/Inf in s or f), SE23_ERR_DT unless
+ * @return SE23_ERR_NONFINITE (NaN/Inf in s or f, or Deltas that would
+ *         overflow), SE23_ERR_DT unless
  *         0 < s.dt <= SE23_CFG_DT_MAX (or f.dt < 0), SE23_ERR_NOT_ROTATION
  *         (f.delta.R not in SO(3) within SE23_CFG_ROT_TOL); f is unchanged
  *         on error.
@@ -85,7 +86,8 @@ void se23_preint_add_increment(se23_preint_t *f, const se23_pose_t *ups,
  * state T_i at t_i through the factor f, with the model's g and Omega
  * (Proposition "Preintegration with Coriolis effect"; flat Earth, paper
  * eq. discrete, when model->w_ie_n = 0). model->dt is not used.
- * @return SE23_ERR_NONFINITE (NaN/Inf in T_i, f or the model),
+ * @return SE23_ERR_NONFINITE (NaN/Inf in T_i, f or the model, or a T_j
+ *         that would overflow),
  *         SE23_ERR_NOT_ROTATION (T_i.R or f.delta.R), SE23_ERR_DT (f.dt < 0);
  *         T_j is unchanged on error.
  */

@@ -168,7 +168,8 @@ se23_status_t se23_preint_unc_check(const se23_preint_unc_t *fu);
  * out.dt and out.n copied. Error O(|bhat - bbar|^2).
  * @param b_g new gyro bias estimate [rad/s]
  * @param b_a new accel bias estimate [m/s^2]
- * @return the statuses of se23_preint_unc_check, SE23_ERR_NONFINITE (bias).
+ * @return the statuses of se23_preint_unc_check, SE23_ERR_NONFINITE (bias,
+ *         or corrected Deltas that would overflow).
  */
 se23_status_t se23_preint_unc_correct(const se23_preint_unc_t *fu,
                                       const se23_vec3_t *b_g,

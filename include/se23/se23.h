@@ -71,7 +71,8 @@ se23_status_t se23_exp(const se23_tangent_t *xi, se23_pose_t *T);
 /**
  * xi = log(T) = (phi, J_l(phi)^-1 v, J_l(phi)^-1 p) with phi = log(R) the
  * principal rotation logarithm (|phi| <= pi).
- * @return SE23_ERR_NONFINITE or SE23_ERR_NOT_ROTATION.
+ * @return SE23_ERR_NONFINITE (NaN/Inf in T, or xi would overflow: v or p
+ *         near the largest real), or SE23_ERR_NOT_ROTATION.
  */
 se23_status_t se23_log(const se23_pose_t *T, se23_tangent_t *xi);
 

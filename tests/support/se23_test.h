@@ -21,6 +21,13 @@
 #define SE23T_EPS ((double)FLT_EPSILON)
 #endif
 
+/** Largest finite real of the build's precision. */
+#if SE23_CFG_DOUBLE
+#define SE23T_REAL_MAX DBL_MAX
+#else
+#define SE23T_REAL_MAX FLT_MAX
+#endif
+
 /**
  * Nonzero when |actual - expected| <= abs_tol + rel_tol * |expected|
  * (and both are finite, or both are the same infinity/NaN never).

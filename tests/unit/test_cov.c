@@ -98,6 +98,33 @@ static void pack_lower(const se23_real_t *A, int n, se23_real_t *L)
     }
 }
 
+/* Regression (fuzz_align: se23_align_cov's P with a variance near the
+ * largest real failed se23_gauss_check): A_ii + tol s overflowed, so a
+ * valid covariance was refused as not PSD. The check now factors A / 4 at
+ * that scale; the verdicts are those of the same matrix scaled down. */
+static void test_cov_check_near_the_largest_real(void **state)
+{
+    (void)state;
+    const se23_real_t big = (se23_real_t)SE23T_REAL_MAX;
+    se23_real_t A[S * S] = {0}, B[S * S] = {0};
+    A[0] = SE23_R(0.0044);
+    A[S + 1] = big;
+    A[2 * S + 2] = big;
+    assert_int_equal(se23_cov_check(A, 3, S), SE23_OK);
+    /* the same verdicts as at an ordinary scale, both ways */
+    const double c[] = {0.5, 1.0, 1.0 + 1e-3};
+    const se23_status_t want[] = {SE23_OK, SE23_OK, SE23_ERR_NOT_PSD};
+    for (int k = 0; k < 3; ++k) {
+        const se23_real_t off = (se23_real_t)(c[k] * 0.5 * SE23T_REAL_MAX);
+        A[0] = A[S + 1] = (se23_real_t)(0.5 * SE23T_REAL_MAX);
+        A[1] = A[S] = off;
+        B[0] = B[S + 1] = SE23_R(0.5);
+        B[1] = B[S] = (se23_real_t)(c[k] * 0.5);
+        assert_int_equal(se23_cov_check(B, 2, S), want[k]);
+        assert_int_equal(se23_cov_check(A, 2, S), want[k]);
+    }
+}
+
 static void test_cov_chol_packed_factors(void **state)
 {
     (void)state;
@@ -178,6 +205,7 @@ int main(void)
         cmocka_unit_test(test_cov_check_rejects_nonfinite),
         cmocka_unit_test(test_cov_check_symmetry_tolerance_both_ways),
         cmocka_unit_test(test_cov_check_psd_tolerance_both_ways),
+        cmocka_unit_test(test_cov_check_near_the_largest_real),
         cmocka_unit_test(test_cov_chol_packed_factors),
         cmocka_unit_test(test_cov_chol_packed_pivot_rules_both_ways),
         cmocka_unit_test(test_cov_check_work_matches_check),

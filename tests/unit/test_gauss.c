@@ -331,6 +331,13 @@ static void test_gauss_input_noise_rejects_bad_input_untouched(void **state)
     B.m[17] = (se23_real_t)INFINITY;
     assert_int_equal(se23_gauss_input_noise(&B, &NOISE, SE23_R(0.01), &Q), SE23_ERR_NONFINITE);
     assert_memory_equal(&Q, &Q0, sizeof Q);
+    /* Regression (fuzz_gauss): a finite B whose B N B^T overflows gave Inf
+     * with SE23_OK. */
+    B.m[17] = (se23_real_t)(0.5 * SE23T_REAL_MAX);
+    assert_int_equal(se23_gauss_input_noise(&B, &NOISE, SE23_R(0.01), &Q), SE23_ERR_NONFINITE);
+    assert_memory_equal(&Q, &Q0, sizeof Q);
+    B.m[17] = SE23_R(1e3); /* and an ordinary one passes */
+    assert_int_equal(se23_gauss_input_noise(&B, &NOISE, SE23_R(0.01), &Q), SE23_OK);
 }
 
 static void test_gauss_cov_propagate_matches_dense_and_is_symmetric(void **state)
@@ -622,6 +629,19 @@ static void test_gauss_predict_rejects_bad_input_untouched(void **state)
     assert_memory_equal(&out, &out0, sizeof out);
 }
 
+/* A sample whose B_k overflows in its products (fuzz_gauss). */
+static void ovf_sample(se23_imu_sample_t *s)
+{
+#if SE23_CFG_DOUBLE
+    const se23_imu_sample_t h = {{{1.34078e154, 1.34078e154, 1.34078e154}},
+                                 {{1.34078e154, 7.29211e-05, 0.001}}, 7.29211e-05};
+#else
+    const se23_imu_sample_t h = {{{1e-12f, 0.5f, -1.32226e23f}}, {{1e18f, 7.29212e-05f, -3.14159f}},
+                                 1e-05f};
+#endif
+    *s = h;
+}
+
 /* Regression (issue 12, D3): finite inputs whose result would overflow
  * gave SE23_OK with Inf; now SE23_ERR_NONFINITE, nothing written. */
 static void test_gauss_predict_refuses_overflow_untouched(void **state)
@@ -661,6 +681,13 @@ static void test_gauss_predict_refuses_overflow_untouched(void **state)
     big.T.v.v[0] = huge * SE23_R(4);
     s.f_b.v[0] = huge * SE23_R(4);
     assert_int_equal(se23_gauss_predict(&model, &big, &s, &NOISE, SE23_INPUT_JAC_EXACT, &out), SE23_ERR_NONFINITE);
+    assert_memory_equal(&out, &out0, sizeof out);
+    /* Regression (fuzz_gauss, fuzz_preint_unc): a huge rate and force whose
+     * B_k overflows inside its products (the bound of the step, exact
+     * arithmetic, is finite) gave NaN in P+ with SE23_OK. */
+    se23_imu_sample_t h;
+    ovf_sample(&h);
+    assert_int_equal(se23_gauss_predict(&model, &g, &h, &NOISE, SE23_INPUT_JAC_EXACT, &out), SE23_ERR_NONFINITE);
     assert_memory_equal(&out, &out0, sizeof out);
 }
 
@@ -760,6 +787,25 @@ static void test_gauss_carried_conversion_rejects_bad_input_untouched(void **sta
     assert_int_equal(se23_gauss_from_carried(&model, &g, &out), SE23_ERR_NONFINITE);
     assert_int_equal(se23_gauss_to_carried(&model, &g, &out), SE23_ERR_NONFINITE);
     assert_memory_equal(&out, &out0, sizeof out);
+    /* Regression (fuzz_gauss): a valid state and model whose Omega x p or
+     * M P M^T overflows gave Inf with SE23_OK. */
+    const se23_vec3_t g_n = {{0, 0, SE23_R(9.8)}}, w = {{0, 0, SE23_R(4)}};
+    assert_int_equal(se23_earth_model_init(&g_n, &w, SE23_R(0.01), SE23_R(0.01), &model), SE23_OK);
+    se23_gauss_t h = g;
+    h.T.p.v[0] = (se23_real_t)(0.5 * SE23T_REAL_MAX); /* |Omega x p| = 2 x the largest real */
+    assert_int_equal(se23_gauss_check(&h), SE23_OK);
+    assert_int_equal(se23_gauss_from_carried(&model, &h, &out), SE23_ERR_NONFINITE);
+    assert_int_equal(se23_gauss_to_carried(&model, &h, &out), SE23_ERR_NONFINITE);
+    assert_memory_equal(&out, &out0, sizeof out);
+    h = g;
+    for (int i = 0; i < 9; ++i) {
+        h.P.m[(S + 1) * i] = (se23_real_t)(0.1 * SE23T_REAL_MAX); /* x (1 + |Omega|)^2 */
+    }
+    assert_int_equal(se23_gauss_check(&h), SE23_OK);
+    assert_int_equal(se23_gauss_from_carried(&model, &h, &out), SE23_ERR_NONFINITE);
+    assert_int_equal(se23_gauss_to_carried(&model, &h, &out), SE23_ERR_NONFINITE);
+    assert_memory_equal(&out, &out0, sizeof out);
+    assert_int_equal(se23_gauss_from_carried(&model, &g, &out), SE23_OK); /* an ordinary one */
 }
 
 /* ------------------------------------------------------------ Monte Carlo */

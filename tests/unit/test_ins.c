@@ -35,6 +35,9 @@ static void m_zero_range(se23_ins_config_t *c) { c->gyro_range = SE23_R(0); }
 static void m_lat(se23_ins_config_t *c) { c->lat = SE23_R(2); }
 static void m_flag(se23_ins_config_t *c) { c->bias_states = 2; }
 static void m_dt(se23_ins_config_t *c) { c->dt_nominal = SE23_R(0); }
+/* Regression (fuzz_ins): max_gap / dt_nominal beyond int64 was converted to
+ * max_missing (undefined behaviour); below 1 ns dt_nominal is refused. */
+static void m_dt_tiny(se23_ins_config_t *c) { c->dt_nominal = (se23_real_t)1e-30; }
 static void m_gap(se23_ins_config_t *c) { c->max_gap = SE23_R(2); }
 static void m_gap_small(se23_ins_config_t *c) { c->max_gap = (se23_real_t)1e-3; }
 static void m_outage(se23_ins_config_t *c) { c->max_outage = SE23_R(1e4); }
@@ -54,6 +57,7 @@ static void test_setup_rejects_each_bad_field_and_writes_nothing(void **state)
         {m_nan_noise, SE23_ERR_NONFINITE}, {m_neg_noise, SE23_ERR_DOMAIN},
         {m_zero_range, SE23_ERR_DOMAIN},   {m_lat, SE23_ERR_DOMAIN},
         {m_flag, SE23_ERR_DOMAIN},         {m_dt, SE23_ERR_DT},
+        {m_dt_tiny, SE23_ERR_DT},
         {m_gap, SE23_ERR_DT},              {m_gap_small, SE23_ERR_DT},
         {m_outage, SE23_ERR_DOMAIN},       {m_ring, SE23_ERR_DIM},
         {m_recover, SE23_ERR_DOMAIN},      {m_zupt_sigma, SE23_ERR_DOMAIN},
@@ -78,6 +82,12 @@ static void test_setup_rejects_each_bad_field_and_writes_nothing(void **state)
         assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
         c.delay_horizon = (se23_real_t)((SE23_INS_RING - 1) / (2.0 * IT_RATE));
         assert_int_equal(se23_ins_setup(&c, &ins), SE23_ERR_DIM);
+        /* dt_nominal's limit, both sides: 1 ns. */
+        c.delay_horizon = SE23_R(0);
+        c.dt_nominal = SE23_R(1e-9);
+        assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
+        c.dt_nominal = SE23_R(0.99e-9);
+        assert_int_equal(se23_ins_setup(&c, &ins), SE23_ERR_DT);
     }
 }
 
@@ -226,6 +236,35 @@ static void test_every_fix_ends_in_one_counter(void **state)
     assert_true((ins.status & SE23_INS_ST_GNSS_AIDED) != 0);
 }
 
+/* Regression (fuzz_ins, UBSan): a state near INT64_MAX ns (any t >= 0 is
+ * a valid time) made the fix screening compute t_ns + half a sample,
+ * a signed overflow (undefined behaviour). The fixes are judged as at
+ * any other time: a fix 10 ms ahead is held, then fused when its sample
+ * arrives. */
+static void test_fixes_near_the_end_of_time(void **state)
+{
+    (void)state;
+    se23_ins_config_t c;
+    se23_gauss_t g;
+    se23_ins_gnss_t fix;
+    const double p0[3] = {0, 0, 0};
+    const long long t0 = INT64_MAX - 2 * IT_DT_NS;
+    it_config(&c, 1);
+    assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
+    it_initial(15, 1e-3, 0.1, 1.0, &g);
+    assert_int_equal(se23_ins_init(&ins, t0, &g), SE23_OK);
+    it_fix(INT64_MAX, p0, 1.0, &fix);
+    assert_int_equal(se23_ins_gnss(&ins, &fix), SE23_INS_PENDING);
+    assert_int_equal(it_run_rest(&ins, NULL, NULL, t0, 0, 1), 1); /* 5 ms to go: held */
+    assert_int_equal(ins.have_pending, 1);
+    assert_int_equal(it_run_rest(&ins, NULL, NULL, t0 + IT_DT_NS, 1, 1), 1); /* due */
+    assert_int_equal(ins.have_pending, 0);
+    assert_int_equal(ins.c.gnss_used, 1);
+    assert_int_equal(ins.t_ns, INT64_MAX);
+    it_fix(INT64_MAX, p0, 1.0, &fix); /* not after the last fused fix */
+    assert_int_equal(se23_ins_gnss(&ins, &fix), SE23_INS_STALE);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -234,6 +273,7 @@ int main(void)
         cmocka_unit_test(test_every_sample_ends_in_one_counter),
         cmocka_unit_test(test_counters_saturate),
         cmocka_unit_test(test_every_fix_ends_in_one_counter),
+        cmocka_unit_test(test_fixes_near_the_end_of_time),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -414,6 +414,47 @@ static void test_preint_predict_rejects_bad_inputs(void **state)
     assert_memory_equal(&out, &out0, sizeof out);
 }
 
+/* Regression (fuzz_preint): finite Deltas, states or Delta t near the
+ * largest real overflowed in se23_preint_add and the predictions, which
+ * returned Inf with SE23_OK. Now refused, nothing written. */
+static void test_preint_rejects_overflow(void **state)
+{
+    (void)state;
+    const se23_real_t big = (se23_real_t)(0.75 * SE23T_REAL_MAX);
+    se23_earth_model_t m;
+    make_model(FLAT, &m);
+    se23_preint_t f, f0;
+    memset(&f, 0, sizeof f); /* defined padding for memory comparisons */
+    se23_preint_reset(&f);
+    f.delta.v.v[0] = big;
+    f0 = f;
+    /* the sample's own increment is finite: dt J f = f */
+    const se23_imu_sample_t s = {{{0, 0, 0}}, {{big, 0, 0}}, SE23_R(1)};
+    se23_pose_t U;
+    assert_int_equal(se23_imu_increment(&s, &U), SE23_OK);
+    assert_int_equal(se23_preint_add(&f, &s), SE23_ERR_NONFINITE);
+    assert_memory_equal(&f, &f0, sizeof f);
+    /* v_j = v_i + R dV + g t: 1.5 x the largest real */
+    se23_pose_t Ti, out, out0;
+    initial_state(&Ti);
+    Ti.v.v[0] = big;
+    memset(&out, SENTINEL, sizeof out);
+    out0 = out;
+    f.dt = SE23_R(1);
+    assert_int_equal(se23_preint_predict(&m, &f, &Ti, &out), SE23_ERR_NONFINITE);
+    assert_int_equal(se23_preint_predict_carried(&m, &f, &Ti, &out), SE23_ERR_NONFINITE);
+    assert_memory_equal(&out, &out0, sizeof out);
+    /* p_j = p_i + R dX + ...: 1.5 x the largest real */
+    f = f0;
+    f.delta.v.v[0] = SE23_R(0);
+    f.delta.p.v[2] = big;
+    f.dt = SE23_R(1);
+    Ti.v.v[0] = SE23_R(0);
+    Ti.p.v[2] = big;
+    assert_int_equal(se23_preint_predict_carried(&m, &f, &Ti, &out), SE23_ERR_NONFINITE);
+    assert_memory_equal(&out, &out0, sizeof out);
+}
+
 static void test_preint_null_arguments_return_err_null(void **state)
 {
     (void)state;
@@ -452,6 +493,7 @@ int main(void)
         cmocka_unit_test(test_preint_add_rejects_bad_samples),
         cmocka_unit_test(test_preint_add_rejects_bad_factor),
         cmocka_unit_test(test_preint_predict_rejects_bad_inputs),
+        cmocka_unit_test(test_preint_rejects_overflow),
         cmocka_unit_test(test_preint_null_arguments_return_err_null),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -568,6 +568,18 @@ static void test_preint_unc_add_refuses_overflow_untouched(void **state)
 #endif
     assert_int_equal(se23_preint_unc_add(&fu, &s, &nz), SE23_ERR_NONFINITE);
     assert_factor_same(&fu, &saved);
+    /* Regression (fuzz_preint_unc): a huge rate and force whose B_k
+     * overflows inside its products (the bound of the step, exact
+     * arithmetic, is finite) gave NaN in P and J with SE23_OK. */
+#if SE23_CFG_DOUBLE
+    const se23_imu_sample_t h = {{{1.34078e154, 1.34078e154, 1.34078e154}},
+                                 {{1.34078e154, 7.29211e-05, 0.001}}, 7.29211e-05};
+#else
+    const se23_imu_sample_t h = {{{1e-12f, 0.5f, -1.32226e23f}}, {{1e18f, 7.29212e-05f, -3.14159f}},
+                                 1e-05f};
+#endif
+    assert_int_equal(se23_preint_unc_add(&fu, &h, &NOISE), SE23_ERR_NONFINITE);
+    assert_factor_same(&fu, &saved);
 }
 
 /* A valid factor with one defect planted by `plant`; add, correct,
@@ -650,6 +662,9 @@ static void test_preint_unc_correct_rejects_bad_bias_untouched(void **state)
     bg.v[0] = SE23_R(3e38);
 #endif
     assert_int_equal(se23_preint_unc_correct(&fu, &bg, &ba, &out), SE23_ERR_NONFINITE);
+    /* Regression (fuzz_preint_unc): the classical correction of the same
+     * bias (dV/dbg db_g beyond the largest real) gave Inf with SE23_OK. */
+    assert_int_equal(se23_preint_unc_correct_classic(&fu, &bg, &ba, &out), SE23_ERR_NONFINITE);
     assert_memory_equal(&out, &out0, sizeof out);
 }
 

@@ -8,6 +8,7 @@
 #include <cmocka.h>
 
 #include "se23/se23.h"
+#include "se23/so3.h"
 #include "se23_test.h"
 
 #define N_RANDOM 200
@@ -249,6 +250,27 @@ static void test_se23_exp_log_reject_bad_input_untouched(void **state)
         o0 = o;
         assert_int_equal(se23_exp(&big, &o), SE23_ERR_NONFINITE);
         assert_memory_equal(&o, &o0, sizeof o);
+    }
+    {
+        /* Regression (fuzz_se23): J_l^-1 v overflowing (|J_l^-1| > 1 near
+         * |phi| = pi) gave Inf with SE23_OK. */
+        const se23_vec3_t phi = {{0, 0, 3}};
+        se23_pose_t T;
+        se23_tangent_t o, o0;
+        se23_identity(&T);
+        assert_int_equal(se23_so3_exp(&phi, &T.R), SE23_OK);
+        T.v.v[1] = SE23T_REAL_MAX; /* nu_x = 1.5 v_y + ... */
+        memset(&o, 0x5a, sizeof o);
+        o0 = o;
+        assert_int_equal(se23_log(&T, &o), SE23_ERR_NONFINITE);
+        assert_memory_equal(&o, &o0, sizeof o);
+        T.v.v[1] = 0;
+        T.p.v[1] = SE23T_REAL_MAX;
+        assert_int_equal(se23_log(&T, &o), SE23_ERR_NONFINITE);
+        assert_memory_equal(&o, &o0, sizeof o);
+        T.p.v[1] = SE23T_REAL_MAX / 4; /* representable: accepted */
+        assert_int_equal(se23_log(&T, &o), SE23_OK);
+        assert_true(isfinite(o.v[SE23_IDX_RHO]));
     }
     (void)state;
     se23_tangent_t xi = {{0.1, 0.2, 0.3, 1, 2, 3, 4, 5, (se23_real_t)INFINITY}};
