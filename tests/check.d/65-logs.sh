@@ -1,4 +1,4 @@
-# Hostile LCM logs (issue 12: T1, T2, T3, T6). The tools read logs with their
+# Hostile LCM logs (issue 12: T1, T2, T3, T6; T11). The tools read logs with their
 # own reader (tools/lcm/logfile.c): a corrupt event is reported with its byte
 # offset, reading goes on at the next valid event, the bytes skipped are
 # counted, and the exit status says so (3). se23-report's early exits leak
@@ -73,3 +73,47 @@ l_resync() {
         grep -q "^CHECK PASSED" "$HL/framing-report.out"
 }
 check logs-resync-framing-valgrind l_resync
+
+# T11: nav states and truth records that decode but hold what no INS or
+# simulator produces (se23-corrupt --nav, tools/lcm/corrupt_nav.c: NaN,
+# non-rotations, a corrupted exponent, negative or corrupted variances,
+# impossible status bits, counters and times) are left out of se23-report's
+# statistics (tools/report/logread.h, "Screening"), counted by reason, and
+# the exit status says so (3); the report prints no NaN and still passes
+# --check on the rest. Under valgrind. Without the screening (--no-screen)
+# the same logs give an RMS of nan and an astronomical NEES: the check can
+# fail.
+l_expect() { # l_expect FILE CHANNEL REASON: se23-corrupt --nav's count
+    awk -v ch="$2" -v r="$3" '$1 == "expect" && $2 == ch && $3 == r {print $4}' "$1"
+}
+l_screen() {
+    $HVG "$HB/se23-corrupt" --nav "$HW/e2e-uav.ins.log" "$HL/screen.ins.log" \
+        >"$HL/screen-ins.expect" &&
+        $HVG "$HB/se23-corrupt" --nav "$HW/e2e-uav.sim.log" "$HL/screen.sim.log" \
+            >"$HL/screen-sim.expect" || return 1
+    ls_nav=$(l_expect "$HL/screen-ins.expect" nav all)
+    ls_truth=$(l_expect "$HL/screen-sim.expect" truth all)
+    ls_line="nav states left out as corrupt (report): $ls_nav"
+    ls_line="$ls_line (non-finite $(l_expect "$HL/screen-ins.expect" nav non-finite)"
+    ls_line="$ls_line, not a rotation $(l_expect "$HL/screen-ins.expect" nav rotation)"
+    ls_line="$ls_line, covariance $(l_expect "$HL/screen-ins.expect" nav covariance)"
+    ls_line="$ls_line, status $(l_expect "$HL/screen-ins.expect" nav status)); truth records: $ls_truth"
+    echo "expected: $ls_line"
+    [ "$ls_nav" -gt 0 ] && [ "$ls_truth" -gt 0 ] &&
+        l_status screen-report 3 \
+            "LOG CORRUPT: $ls_nav nav states and $ls_truth truth records left out (exit status 3)" \
+            $HVG "$HB/se23-report" --check "$HL/screen.sim.log" "$HL/screen.ins.log" &&
+        grep -qF "$ls_line" "$HL/screen-report.out" &&
+        grep -q "^CHECK PASSED" "$HL/screen-report.out" &&
+        ! grep -qiw nan "$HL/screen-report.out" &&
+        grep -q "mean NEES, pose (9 dof): *[0-9]\.[0-9][0-9]  " "$HL/screen-report.out"
+}
+check logs-screen-nav-truth-valgrind l_screen
+l_screen_can_fail() {
+    "$HB/se23-report" --no-screen "$HL/screen.sim.log" "$HL/screen.ins.log" \
+        >"$HL/screen-off.out" 2>&1
+    cat "$HL/screen-off.out"
+    grep -qiw nan "$HL/screen-off.out" &&
+        ! grep -q "mean NEES, pose (9 dof): *[0-9]\.[0-9][0-9]  " "$HL/screen-off.out"
+}
+check logs-screen-can-fail l_screen_can_fail

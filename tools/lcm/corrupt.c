@@ -23,6 +23,7 @@
  *
  * usage: se23-corrupt IN.log OUT.log
  *        se23-corrupt --framing IN.log OUT.log   (corrupt_framing.c)
+ *        se23-corrupt --nav IN.log OUT.log       (corrupt_nav.c)
  */
 #define _POSIX_C_SOURCE 200809L
 #include <lcm/eventlog.h>
@@ -32,6 +33,7 @@
 #include <string.h>
 
 #include "corrupt_framing.h"
+#include "corrupt_nav.h"
 #include "harness.h"
 #include "logfile.h"
 #include "se23lcm_gnss_fix.h"
@@ -247,8 +249,11 @@ int main(int argc, char **argv)
     if (argc == 4 && strcmp(argv[1], "--framing") == 0) {
         return corrupt_framing(argv[2], argv[3]);
     }
+    if (argc == 4 && strcmp(argv[1], "--nav") == 0) {
+        return corrupt_nav(argv[2], argv[3]);
+    }
     if (argc != 3) {
-        fprintf(stderr, "usage: se23-corrupt [--framing] IN.log OUT.log\n");
+        fprintf(stderr, "usage: se23-corrupt [--framing | --nav] IN.log OUT.log\n");
         return 2;
     }
     if (logfile_open(&in, argv[1], "se23-corrupt") != 0) {

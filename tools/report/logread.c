@@ -2,6 +2,7 @@
 #include "logread.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -23,15 +24,137 @@ static void *push(void **arr, size_t *n, size_t *cap, size_t sz)
     return (char *)*arr + (*n)++ * sz;
 }
 
-static void decode_event(const logfile_event_t *ev, log_data_t *d)
+const char *log_bad_str(log_bad_t why)
+{
+    static const char *const names[LOG_BAD_COUNT] = {"ok", "non-finite", "not a rotation",
+                                                      "covariance", "status"};
+    return (why >= LOG_OK && why < LOG_BAD_COUNT) ? names[why] : "?";
+}
+
+static int all_finite(const double *x, int n)
+{
+    int i;
+    for (i = 0; i < n; i++) {
+        if (!isfinite(x[i])) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+/* R (row-major) a rotation: R^T R - I within LOG_ROT_TOL, det R > 0. */
+static int is_rotation(const double R[9])
+{
+    int i, j, k;
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) {
+            long double s = (i == j) ? -1.0L : 0.0L;
+            for (k = 0; k < 3; k++) {
+                s += (long double)R[3 * k + i] * R[3 * k + j];
+            }
+            if (!(fabsl(s) <= LOG_ROT_TOL)) {
+                return 0;
+            }
+        }
+    }
+    return R[0] * (R[4] * R[8] - R[5] * R[7]) - R[1] * (R[3] * R[8] - R[5] * R[6]) +
+               R[2] * (R[3] * R[7] - R[4] * R[6]) >
+           0.0;
+}
+
+/* P (15x15, finite): diagonal >= 0, symmetric, 2x2 minors >= 0 to rounding. */
+static int cov_plausible(const double *P)
+{
+    double s = 0.0;
+    int i, j;
+    for (i = 0; i < 15; i++) {
+        if (!(P[16 * i] >= 0.0)) {
+            return 0;
+        }
+        s = fmax(s, P[16 * i]);
+    }
+    for (i = 0; i < 15; i++) {
+        for (j = i + 1; j < 15; j++) {
+            const double a = P[15 * i + j], b = P[15 * j + i];
+            if (fabs(a - b) > LOG_COV_TOL * s ||
+                fabs(a) > (1.0 + LOG_COV_TOL) * sqrt(P[16 * i] * P[16 * j]) + LOG_COV_TOL * s) {
+                return 0;
+            }
+        }
+    }
+    return 1;
+}
+
+log_bad_t log_screen_nav(const se23lcm_nav_state *m)
+{
+    const int64_t counters[] = {m->n_imu_used,        m->n_imu_nonfinite, m->n_imu_range,
+                                m->n_imu_duplicate,   m->n_imu_out_of_order,
+                                m->n_imu_bad_time,    m->n_imu_bad_dt,    m->n_imu_missing,
+                                m->n_imu_early,       m->n_decode_errors, m->n_gnss_used,
+                                m->n_gnss_rejected,   m->n_time_resets,   m->n_filter_errors,
+                                m->n_init_rejected};
+    size_t i;
+    if (!all_finite(m->R_nb, 9) || !all_finite(m->v_n, 3) || !all_finite(m->p_n, 3) ||
+        !all_finite(m->b_g, 3) || !all_finite(m->b_a, 3) || !all_finite(m->P, 225) ||
+        !isfinite(m->nis_last) || !isfinite(m->detector_stat)) {
+        return LOG_BAD_NONFINITE;
+    }
+    if (!is_rotation(m->R_nb)) {
+        return LOG_BAD_ROTATION;
+    }
+    if (!cov_plausible(m->P)) {
+        return LOG_BAD_COV;
+    }
+    if (m->t_ns < 0 || m->seq < 0 || (m->status & ~0x1ff) != 0 || (m->status & 0x001) == 0) {
+        return LOG_BAD_STATUS;
+    }
+    for (i = 0; i < sizeof counters / sizeof counters[0]; i++) {
+        if (counters[i] < 0) {
+            return LOG_BAD_STATUS;
+        }
+    }
+    return LOG_OK;
+}
+
+log_bad_t log_screen_truth(const se23lcm_truth *m)
+{
+    if (!all_finite(m->R_nb, 9) || !all_finite(m->v_n, 3) || !all_finite(m->p_n, 3) ||
+        !all_finite(m->b_g, 3) || !all_finite(m->b_a, 3)) {
+        return LOG_BAD_NONFINITE;
+    }
+    if (!is_rotation(m->R_nb)) {
+        return LOG_BAD_ROTATION;
+    }
+    return (m->t_ns < 0 || m->seq < 0) ? LOG_BAD_STATUS : LOG_OK;
+}
+
+/* Counts a record the screening left out; says so for the first few. */
+static void left_out(log_data_t *d, int64_t *counts, const char *what, const char *path,
+                     const logfile_event_t *ev, int64_t t_ns, log_bad_t why)
+{
+    enum { SHOWN = 5 };
+    counts[0]++;
+    counts[why]++;
+    if (d->nav_rejected[0] + d->truth_rejected[0] <= SHOWN) {
+        fprintf(stderr, "se23-report: %s: %s at byte %zu (t = %.3f s) left out: %s%s\n", path,
+                what, ev->offset, (double)t_ns * 1e-9, log_bad_str(why),
+                d->nav_rejected[0] + d->truth_rejected[0] == SHOWN ? " (further ones counted only)"
+                                                                    : "");
+    }
+}
+
+static void decode_event(const logfile_event_t *ev, const char *path, log_data_t *d)
 {
     const char *ch = ev->channel;
     int len = ev->datalen;
     int bad = 0;
     if (strcmp(ch, HARNESS_CH_TRUTH) == 0) {
         se23lcm_truth m;
+        log_bad_t why = LOG_OK;
         bad = se23lcm_truth_decode(ev->data, 0, len, &m) < 0;
-        if (!bad) {
+        if (!bad && d->screen && (why = log_screen_truth(&m)) != LOG_OK) {
+            left_out(d, d->truth_rejected, "truth", path, ev, m.t_ns, why);
+        } else if (!bad) {
             se23lcm_truth *slot = push((void **)&d->truth, &d->n_truth, &d->cap_truth, sizeof m);
             if (slot) {
                 *slot = m;
@@ -39,8 +162,11 @@ static void decode_event(const logfile_event_t *ev, log_data_t *d)
         }
     } else if (strcmp(ch, HARNESS_CH_NAV) == 0) {
         se23lcm_nav_state m;
+        log_bad_t why = LOG_OK;
         bad = se23lcm_nav_state_decode(ev->data, 0, len, &m) < 0;
-        if (!bad) {
+        if (!bad && d->screen && (why = log_screen_nav(&m)) != LOG_OK) {
+            left_out(d, d->nav_rejected, "nav state", path, ev, m.t_ns, why);
+        } else if (!bad) {
             se23lcm_nav_state *slot = push((void **)&d->nav, &d->n_nav, &d->cap_nav, sizeof m);
             if (slot) {
                 *slot = m;
@@ -96,7 +222,7 @@ int log_read(const char *path, log_data_t *d)
     }
     while (logfile_next(&log, &ev)) {
         d->n_events++;
-        decode_event(&ev, d);
+        decode_event(&ev, path, d);
     }
     d->bytes_skipped += log.bytes_skipped;
     d->corrupt_spans += log.corrupt_spans;

@@ -31,6 +31,7 @@ typedef struct {
     double check_nees_lo, check_nees_hi; /* band on mean NEES / dof */
     double check_max_pos;  /* final position error bound [m] (<= 0: none) */
     double check_preint;   /* factor prediction error bound [m] (<= 0: none) */
+    int no_screen;         /* read nav states and truth unscreened (logread.h) */
     int n_logs;
     const char **logs;
 } rep_opts_t;
@@ -48,7 +49,10 @@ static void usage(FILE *f)
             "                      [--nees-lo, --nees-hi] (0.3, 3)\n"
             "  --max-pos-err M     exit 1 unless the final position error is <= M [m]\n"
             "  --max-preint-err M  exit 1 unless every preintegrated factor predicts the\n"
-            "                      truth at its end from the truth at its start within M [m]\n");
+            "                      truth at its end from the truth at its start within M [m]\n"
+            "  --no-screen         keep nav states and truth records with NaN, non-rotations,\n"
+            "                      negative variances or impossible status (by default left\n"
+            "                      out and counted, exit status 3)\n");
 }
 
 static int parse_args(int argc, char **argv, rep_opts_t *o)
@@ -64,6 +68,7 @@ static int parse_args(int argc, char **argv, rep_opts_t *o)
         {"--nees-hi", HOPT_DOUBLE, &o->check_nees_hi, 0.0, inf, NULL},
         {"--max-pos-err", HOPT_DOUBLE, &o->check_max_pos, 0.0, inf, NULL},
         {"--max-preint-err", HOPT_DOUBLE, &o->check_preint, 0.0, inf, NULL},
+        {"--no-screen", HOPT_FLAG, &o->no_screen, 1, 0, NULL},
     };
     memset(o, 0, sizeof *o);
     o->plot_script = "tools/report/plot.py";
@@ -275,8 +280,10 @@ static int report(const rep_opts_t *o, log_data_t *d)
     }
     print_header(d);
     if (n == 0) {
-        printf("no nav state matches a truth time (%zu truth, %zu nav states)\n", d->n_truth,
-               d->n_nav);
+        printf("no nav state matches a truth time (%zu truth, %zu nav states; left out as "
+               "corrupt: %lld nav states, %lld truth records)\n",
+               d->n_truth, d->n_nav, (long long)d->nav_rejected[0],
+               (long long)d->truth_rejected[0]);
         free(ep);
         return 0;
     }
@@ -322,6 +329,11 @@ static int report(const rep_opts_t *o, log_data_t *d)
            (unsigned)last->status);
     printf("  log bytes skipped as corrupt (report): %lld in %lld places\n",
            (long long)d->bytes_skipped, (long long)d->corrupt_spans);
+    printf("  nav states left out as corrupt (report): %lld (non-finite %lld, not a rotation "
+           "%lld, covariance %lld, status %lld); truth records: %lld\n",
+           (long long)d->nav_rejected[0], (long long)d->nav_rejected[LOG_BAD_NONFINITE],
+           (long long)d->nav_rejected[LOG_BAD_ROTATION], (long long)d->nav_rejected[LOG_BAD_COV],
+           (long long)d->nav_rejected[LOG_BAD_STATUS], (long long)d->truth_rejected[0]);
 
     if (d->n_preint > 0) {
         preint_check_t pc;
@@ -400,7 +412,8 @@ static int report(const rep_opts_t *o, log_data_t *d)
 /*
  * Exit status: 0 every check passed; 1 a check failed, a log cannot be read,
  * or there is nothing to compare; 2 usage; 3 every check passed but bytes of
- * a corrupt log were skipped (tools/lcm/logfile.h).
+ * a corrupt log were skipped (tools/lcm/logfile.h) or nav states or truth
+ * records that decoded were left out as corrupt (logread.h, "Screening").
  */
 int main(int argc, char **argv)
 {
@@ -414,6 +427,7 @@ int main(int argc, char **argv)
         free((void *)o.logs);
         return 2;
     }
+    d.screen = !o.no_screen; /* NaN, non-rotations, negative variances stay out */
     for (k = 0; k < o.n_logs && rc == 0; k++) {
         rc = log_read(o.logs[k], &d) != 0;
     }
@@ -427,6 +441,11 @@ int main(int argc, char **argv)
     if (rc == 0 && d.bytes_skipped > 0) {
         printf("LOG CORRUPT: %lld bytes skipped in %lld places (exit status 3)\n",
                (long long)d.bytes_skipped, (long long)d.corrupt_spans);
+        rc = 3;
+    }
+    if ((rc == 0 || rc == 3) && d.nav_rejected[0] + d.truth_rejected[0] > 0) {
+        printf("LOG CORRUPT: %lld nav states and %lld truth records left out (exit status 3)\n",
+               (long long)d.nav_rejected[0], (long long)d.truth_rejected[0]);
         rc = 3;
     }
     free((void *)o.logs);
