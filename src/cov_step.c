@@ -271,13 +271,14 @@ static void bias_blocks(step_t *s)
 
 int se23_input_blocks_finite(const se23_input_blocks_t *Bt)
 {
-    int ok = 1;
     for (int i = PHI; i <= RHO; ++i) {
         for (int k = GYR; k <= ACC; ++k) {
-            ok = ok && se23_all_finite(&Bt->blk[i][k].m[0][0], 9);
+            if (se23_all_finite(&Bt->blk[i][k].m[0][0], 9) == 0) {
+                return 0;
+            }
         }
     }
-    return ok;
+    return 1;
 }
 
 se23_real_t se23_input_blocks_row_sum(const se23_input_blocks_t *Bt)
