@@ -6,6 +6,7 @@
 #   make cross   the library for Cortex-M4F (float) and Cortex-M7 (double)
 #   make bench   host benchmark: filter steps vs a dense Eigen reference
 #                (ns and callgrind instructions per call), routines
+#   make fuzz    libFuzzer targets (tests/fuzz), FUZZ_TIME seconds each
 #   make clean   removes $(BUILD): the tree is then as cloned
 #
 # Firmware builds can instead compile src/*.c with include/ on their include
@@ -103,6 +104,7 @@ check: deps
 
 -include port/target.mk
 -include tools/harness.mk
+-include tests/fuzz/fuzz.mk
 -include tools/bench.mk
 -include tools/paper.mk
 -include tools/accuracy/accuracy.mk

@@ -140,11 +140,15 @@ se23_status_t se23_align_cov(const se23_mat3_t *R, se23_real_t sigma_f, int n,
     if (st != SE23_OK) {
         return st;
     }
-    /* P = t2 I + (y2 - t2) r r^T, r = R^T e_z; upper triangle, mirrored. */
+    /* P = t2 I + (y2 - t2) r r^T / |r|^2, r = R^T e_z; upper triangle,
+     * mirrored. R is a rotation only to SE23_CFG_ROT_TOL: without the
+     * division the variance along r, y2 + (y2 - t2)(|r|^2 - 1), went
+     * negative for y2 far below t2. */
     const se23_real_t tl = sigma_f / g;
     const se23_real_t t2 = tl * tl / (se23_real_t)n;
-    const se23_real_t c = sigma_yaw * sigma_yaw - t2;
     const se23_vec3_t r = {{R->m[2][0], R->m[2][1], R->m[2][2]}};
+    const se23_real_t rr = (r.v[0] * r.v[0]) + (r.v[1] * r.v[1]) + (r.v[2] * r.v[2]);
+    const se23_real_t c = (sigma_yaw * sigma_yaw - t2) / rr; /* |rr - 1| <= 3 tol */
     se23_mat3_t out;
     for (int i = 0; i < 3; ++i) {
         const se23_real_t cri = c * r.v[i];

@@ -153,13 +153,20 @@ se23_status_t se23_gauss_cov_propagate(const se23_mat9_t *Sg,
     if (st == SE23_OK) {
         st = se23_cov_check(Q->m, 9, 9);
     }
+    static const se23_input_blocks_t no_input; /* zero */
+    static const se23_step_noise_t no_noise;
+    /* The bound of se23_gauss_predict: a finite result of a huge U (|v|
+     * near the largest real) is no covariance either, it only looks like
+     * one where S's entries are exactly zero. */
+    if (st == SE23_OK && !se23_cov_step_fits(U, dt, SE23_R(0), &no_noise, SE23_GAUSS_N_POSE,
+                                             Sg->m, 9)) {
+        st = SE23_ERR_NONFINITE;
+    }
     if (st != SE23_OK) {
         return st;
     }
     /* F_k S F_k^T by the kernel without input terms, then + Q, all in a
      * local: S_next may alias S or Q. */
-    static const se23_input_blocks_t no_input; /* zero */
-    static const se23_step_noise_t no_noise;
     se23_mat9_t P = {{SE23_R(0)}};
     se23_cov_step(U, dt, &no_input, &no_noise, SE23_GAUSS_N_POSE, Sg->m, P.m, 9);
     for (int i = 0; i < 9; ++i) {

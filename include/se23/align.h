@@ -127,7 +127,9 @@ se23_status_t se23_align_level(se23_frame_t frame, const se23_vec3_t *f_mean,
 /**
  * P = the covariance of the body-frame attitude error phi (R = Rbar
  * exp(phi^)) of an alignment: tilt^2 I + (sigma_yaw^2 - tilt^2) r r^T,
- * tilt = sigma_f / (g sqrt n), r = R^T e_z (file comment).
+ * tilt = sigma_f / (g sqrt n), r = R^T e_z (file comment), computed with
+ * r r^T / |r|^2 (R is a rotation only to SE23_CFG_ROT_TOL; so P stays PSD
+ * however small sigma_yaw is against tilt).
  * @param R         the aligned attitude Rbar, body -> nav
  * @param sigma_f   accelerometer noise std of one sample, per axis [m/s^2]
  *                  (sqrt of se23_stationary_var's f_var at rest, or sigma_a)

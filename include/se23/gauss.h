@@ -190,7 +190,8 @@ se23_status_t se23_gauss_input_noise(const se23_mat9x6_t *B,
  * @return SE23_ERR_NONFINITE, SE23_ERR_NOT_SYMMETRIC or SE23_ERR_NOT_PSD
  *         (S or Q, file comment), SE23_ERR_NOT_ROTATION (U),
  *         SE23_ERR_DT (dt <= 0 or > SE23_CFG_DT_MAX), SE23_ERR_NONFINITE
- *         if S_next would overflow.
+ *         if S_next would overflow (the O(n) bound of se23_gauss_predict on
+ *         S's largest variance and U decides).
  */
 se23_status_t se23_gauss_cov_propagate(const se23_mat9_t *S,
                                        const se23_pose_t *U, se23_real_t dt,

@@ -423,7 +423,11 @@ se23_ins_verdict_t se23_ins_gnss(se23_ins_t *ins, const se23_ins_gnss_t *fix);
 
 /**
  * out = the user's state (R, v, p, biases, covariance); t_ns its time.
- * @return SE23_ERR_DIM before the first state; otherwise SE23_OK.
+ * @return SE23_ERR_DIM before the first state; SE23_ERR_NONFINITE if the
+ *         conversion from the carried state would overflow (rotating
+ *         Earth: Omega x p or the covariance's shear beyond the largest
+ *         real, only for absurd states, se23_gauss_from_carried); otherwise
+ *         SE23_OK. Nothing is written on error.
  */
 se23_status_t se23_ins_state(const se23_ins_t *ins, se23_gauss_t *out, int64_t *t_ns);
 

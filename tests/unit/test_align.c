@@ -17,6 +17,7 @@
 
 #include "gauss_test.h"
 #include "se23/align.h"
+#include "se23/gauss.h"
 #include "se23/so3.h"
 #include "se23_test.h"
 
@@ -298,6 +299,43 @@ static void test_align_cov_matches_dense_congruence(void **state)
     assert_near(P.m[1][1], 4e-8, 0, 8 * SE23T_EPS);
     assert_near(P.m[2][2], 1e-2, 0, 8 * SE23T_EPS);
     assert_true(P.m[0][1] == 0 && P.m[0][2] == 0 && P.m[1][2] == 0);
+}
+
+/* Regression (fuzz_align): an R that is a rotation only to
+ * SE23_CFG_ROT_TOL (its third row r a little longer than 1) and a heading
+ * std far below the tilt's gave P = t2 I + (y2 - t2) r r^T a variance
+ * y2 + (y2 - t2)(|r|^2 - 1) < 0 along r, so se23_gauss_check refused the
+ * SE23_OK output. With r r^T / |r|^2 the variance along r is y2. */
+static void test_align_cov_psd_at_the_rotation_tolerance(void **state)
+{
+    (void)state;
+    const double a = 1.0 / sqrt(2.0), b = 1.0 / sqrt(6.0), c = 1.0 / sqrt(3.0);
+    const double k = 1.0 + 0.9 * SE23_CFG_ROT_TOL; /* |r|^2 = 1 + 1.8 tol */
+    const se23_mat3_t R = {{{(se23_real_t)a, (se23_real_t)-a, 0},
+                            {(se23_real_t)b, (se23_real_t)b, (se23_real_t)(-2.0 * b)},
+                            {(se23_real_t)(k * c), (se23_real_t)(k * c), (se23_real_t)(k * c)}}};
+    se23_mat3_t P;
+    se23_gauss_t g;
+    assert_int_equal(se23_so3_check(&R), SE23_OK);
+    /* tilt^2 = 1, sigma_yaw^2 = 1e-12 */
+    assert_int_equal(se23_align_cov(&R, SE23_R(1), 1, SE23_R(1), (se23_real_t)1e-6, &P), SE23_OK);
+    memset(&g, 0, sizeof g);
+    g.n = 9;
+    for (int i = 0; i < 3; ++i) {
+        g.T.R.m[i][i] = SE23_R(1);
+        for (int j = 0; j < 3; ++j) {
+            g.P.m[15 * i + j] = P.m[i][j];
+        }
+    }
+    assert_int_equal(se23_gauss_check(&g), SE23_OK);
+    /* the variance along r is sigma_yaw^2, to rounding of tilt^2 */
+    double q = 0;
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            q += c * (double)P.m[i][j] * c;
+        }
+    }
+    assert_near(q, 1e-12, 8 * SE23T_EPS, 0);
 }
 
 static void test_align_cov_rejects_bad_input_untouched(void **state)
@@ -645,6 +683,7 @@ int main(void)
         cmocka_unit_test(test_align_level_handles_vertical_body_x),
         cmocka_unit_test(test_align_level_rejects_bad_input_untouched),
         cmocka_unit_test(test_align_cov_matches_dense_congruence),
+        cmocka_unit_test(test_align_cov_psd_at_the_rotation_tolerance),
         cmocka_unit_test(test_align_cov_rejects_bad_input_untouched),
         cmocka_unit_test(test_align_level_monte_carlo_matches_tilt_std_and_cov),
         cmocka_unit_test(test_align_level_euler_yaw_couples_tilt_into_vertical),

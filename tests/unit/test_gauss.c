@@ -13,6 +13,7 @@
 
 #include <cmocka.h>
 
+#include "cov.h"
 #include "gauss_test.h"
 #include "se23/gauss.h"
 #include "se23/imu.h"
@@ -425,6 +426,28 @@ static void test_gauss_cov_propagate_rejects_bad_input_untouched(void **state)
     for (int k = 0; k < 4; ++k) {
         assert_int_equal(se23_gauss_cov_propagate(&Sg, &U, bad_dt[k], &Q, &out), SE23_ERR_DT);
     }
+    assert_memory_equal(&out, &out0, sizeof out);
+    /* Regression (make fuzz, fuzz_gauss): an increment with |v| near the
+     * largest real and an S that is PSD only within tolerance (a tiny
+     * covariance beside a zero variance) gave a finite S_next with
+     * variances of -1e114, with SE23_OK; the bound of se23_gauss_predict
+     * now refuses it. */
+    se23_pose_t huge;
+    se23_mat9_t S0 = {{0}}, Q0 = {{0}};
+    se23_identity(&huge);
+#if SE23_CFG_DOUBLE
+    huge.v.v[0] = -1.89165e302;
+    S0.m[1] = S0.m[9] = -2.16e-243;
+#else
+    huge.v.v[0] = -1.89165e37f;
+    S0.m[1] = S0.m[9] = -2.16e-40f;
+#endif
+    huge.v.v[1] = SE23_R(1e3);
+    huge.p.v[0] = SE23_R(-7e3);
+    S0.m[0] = (se23_real_t)7.29e-5;
+    assert_int_equal(se23_cov_check(S0.m, 9, 9), SE23_OK);
+    assert_int_equal(se23_gauss_cov_propagate(&S0, &huge, (se23_real_t)7.29e-5, &Q0, &out),
+                     SE23_ERR_NONFINITE);
     assert_memory_equal(&out, &out0, sizeof out);
 }
 

@@ -1,0 +1,178 @@
+/*
+ * libFuzzer target of se23/kalman.h: the measurement models on decoded
+ * poses, vectors and covariances (statuses in the header's set; on SE23_OK
+ * every element of y finite, 1 <= m <= 9; on an error y untouched), and
+ * the update of a state that se23_gauss_check accepts (the state is
+ * trusted) with a model's measurement or a decoded one (statuses in the
+ * header's set; on SE23_OK the state passes se23_gauss_check, the NIS is
+ * finite and >= 0; on an error out and nis untouched). update(g, y, g, nis)
+ * equals update(g, y, out, nis) bit for bit.
+ */
+#include "fuzz.h"
+
+#include "se23/kalman.h"
+
+static void cov3_of(fz_t *f, se23_mat3_t *C)
+{
+    se23_real_t P[9];
+    int i, j;
+    fz_cov(f, 3, 3, P);
+    for (i = 0; i < 3; ++i) {
+        for (j = 0; j < 3; ++j) {
+            C->m[i][j] = P[3 * i + j];
+        }
+    }
+}
+
+static void check_meas(se23_status_t st, const se23_meas_t *y, const char *what)
+{
+    FZ_REQUIRE(fz_status_in(st, 4, SE23_ERR_NONFINITE, SE23_ERR_NOT_ROTATION,
+                            SE23_ERR_NOT_SYMMETRIC, SE23_ERR_NOT_PSD),
+               "%s: %d", what, st);
+    if (st != SE23_OK) {
+        FZ_REQUIRE(fz_untouched(y, sizeof *y), "%s wrote on error %d", what, st);
+        return;
+    }
+    FZ_REQUIRE(y->m >= 1 && y->m <= SE23_MEAS_MMAX, "%s: m = %d", what, y->m);
+    FZ_REQUIRE(fz_finite(y->z, SE23_MEAS_MMAX) &&
+                   fz_finite(y->H, SE23_MEAS_MMAX * SE23_GAUSS_NMAX) &&
+                   fz_finite(y->R, SE23_MEAS_MMAX * SE23_MEAS_MMAX),
+               "%s: OK with a non-finite element", what);
+}
+
+/* A measurement from one of the models at T, or decoded; 0 if none was made. */
+static int meas_of(fz_t *f, const se23_pose_t *T, const se23_vec3_t *b_g, se23_meas_t *y)
+{
+    se23_vec3_t a, b, c;
+    se23_mat3_t C;
+    se23_status_t st;
+    uint8_t op = fz_u8(f) % 6;
+    if (op == 5) {
+        int i;
+        memset(y, 0, sizeof *y);
+        y->m = fz_u8(f) < 240 ? 1 + fz_u8(f) % 9 : fz_int(f);
+        for (i = 0; i < SE23_MEAS_MMAX; ++i) {
+            y->z[i] = fz_u8(f) < 128 ? fz_mild(f) : fz_real(f);
+        }
+        for (i = 0; i < SE23_MEAS_MMAX * SE23_GAUSS_NMAX; ++i) {
+            uint8_t k = fz_u8(f);
+            y->H[i] = k < 128 ? 0 : k < 224 ? fz_mild(f) : fz_real(f);
+        }
+        fz_cov(f, (y->m >= 1 && y->m <= 9) ? y->m : 9, 9, y->R);
+        return 1;
+    }
+    if (fz_u8(f) < 160) {
+        fz_vec3_mild(f, &a);
+        fz_vec3_mild(f, &b);
+        fz_vec3_mild(f, &c);
+    } else {
+        fz_vec3(f, &a);
+        fz_vec3(f, &b);
+        fz_vec3(f, &c);
+    }
+    cov3_of(f, &C);
+    fz_fill(y, sizeof *y);
+    switch (op) {
+    case 0:
+        st = se23_meas_pos_nav(T, &a, &b, &C, y);
+        check_meas(st, y, "meas_pos_nav");
+        break;
+    case 1:
+        st = se23_meas_vel_nav(T, &a, &C, y);
+        check_meas(st, y, "meas_vel_nav");
+        break;
+    case 2:
+        st = se23_meas_vel_nav_lever(T, &a, &b, &c, &C, y);
+        check_meas(st, y, "meas_vel_nav_lever");
+        break;
+    case 3:
+        st = se23_meas_vel_body(T, &a, &C, y);
+        check_meas(st, y, "meas_vel_body");
+        break;
+    default:
+        st = se23_meas_zero_rate(&a, b_g, &C, y);
+        FZ_REQUIRE(st != SE23_ERR_NOT_ROTATION, "meas_zero_rate: %d", st);
+        check_meas(st, y, "meas_zero_rate");
+        break;
+    }
+    return st == SE23_OK;
+}
+
+/* The rounding bound of src/kalman_parts.c for the update of g with y:
+ * P+ is the exact Schur complement of a matrix within g (M_ii M_jj)^1/2 of
+ * M = [[S, C^T], [C, P]], g = (m + 1) eps / (1 - (m + 1) eps), so its
+ * eigenvalues are above -g (n + m) max_i M_ii (here 4 times that), plus
+ * the input's own tolerance (fuzz.h, "the one known open finding"). */
+static double update_bound(const se23_gauss_t *g, const se23_meas_t *y)
+{
+    const int n = g->n, m = y->m;
+    double mx = fz_max_diag(g->P.m, n, 15);
+    const double gam = (m + 1) * FZ_EPS / (1.0 - (m + 1) * FZ_EPS);
+    int r, i, j;
+    for (r = 0; r < m; ++r) {
+        long double sr = (long double)y->R[9 * r + r];
+        for (i = 0; i < n; ++i) {
+            for (j = 0; j < n; ++j) {
+                sr += (long double)y->H[15 * r + i] * g->P.m[15 * i + j] * y->H[15 * r + j];
+            }
+        }
+        mx = fmax(mx, fabs((double)sr));
+    }
+    return 4.0 * gam * (n + m) * mx + SE23_CFG_COV_TOL * fz_max_diag(g->P.m, n, 15);
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    fz_t f;
+    se23_gauss_t g, out, t;
+    int updates = 0;
+    fz_init(&f, data, size);
+    fz_gauss(&f, &g);
+    if (se23_gauss_check(&g) != SE23_OK) {
+        /* only the models: they check everything they read */
+        se23_meas_t y;
+        while (fz_left(&f) && updates++ < 16) {
+            (void)meas_of(&f, &g.T, &g.b_g, &y);
+        }
+        return 0;
+    }
+    while (fz_left(&f) && updates++ < 16) {
+        se23_meas_t y;
+        se23_real_t nis, nis_a;
+        se23_status_t st, sa;
+        const int want_nis = fz_u8(&f) < 224;
+        if (!meas_of(&f, &g.T, &g.b_g, &y)) {
+            continue;
+        }
+        fz_fill(&out, sizeof out);
+        fz_fill(&nis, sizeof nis);
+        st = se23_kalman_update(&g, &y, &out, want_nis ? &nis : NULL);
+        FZ_REQUIRE(fz_status_in(st, 5, SE23_ERR_DIM, SE23_ERR_NONFINITE, SE23_ERR_NOT_SYMMETRIC,
+                                SE23_ERR_NOT_PSD, SE23_ERR_NULL),
+                   "update: %d", st);
+        FZ_REQUIRE(st != SE23_ERR_NULL, "update: SE23_ERR_NULL without a NULL argument");
+        memcpy(&t, &g, sizeof g);
+        fz_fill(&nis_a, sizeof nis_a);
+        sa = se23_kalman_update(&t, &y, &t, want_nis ? &nis_a : NULL);
+        FZ_REQUIRE(sa == st, "update(g, g): status %d, plain %d", sa, st);
+        if (st != SE23_OK) {
+            FZ_REQUIRE(fz_untouched(&out, sizeof out) && fz_untouched(&nis, sizeof nis),
+                       "update wrote on error %d", st);
+            FZ_REQUIRE(fz_gauss_same(&t, &g), "update(g, g) changed g on error %d", st);
+            continue;
+        }
+        if (!fz_check_cov_step(&out, update_bound(&g, &y), "update")) {
+            return 0; /* the known finding: not a state to go on with */
+        }
+        if (want_nis) {
+            FZ_REQUIRE(isfinite(nis) && nis >= 0, "update: OK with NIS %g", (double)nis);
+            FZ_REQUIRE(memcmp(&nis, &nis_a, sizeof nis) == 0, "update(g, g): another NIS");
+        } else {
+            FZ_REQUIRE(fz_untouched(&nis, sizeof nis), "update wrote a NIS it was not asked for");
+        }
+        FZ_REQUIRE(fz_gauss_same(&t, &out), "update(g, g) differs from the plain call");
+        memcpy(&g, &out, sizeof g);
+    }
+    return 0;
+}

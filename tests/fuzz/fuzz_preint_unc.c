@@ -1,0 +1,149 @@
+/*
+ * libFuzzer target of se23/preint_unc.h: a factor from reset or
+ * reset_classic on decoded biases and kinds (on SE23_OK it passes
+ * se23_preint_unc_check: "starts valid"), samples added (on SE23_OK the
+ * factor still passes se23_preint_unc_check: "stays valid"; on an error it
+ * is unchanged), the corrections (on SE23_OK finite Deltas, Delta R in
+ * SO(3), dt and n copied; on an error the sentinel untouched), and the
+ * check and corrections of a factor decoded raw (they check what they read).
+ */
+#include "fuzz.h"
+
+#include "se23/preint_unc.h"
+
+static void noise_of(fz_t *f, se23_imu_noise_t *q)
+{
+    if (fz_u8(f) < 192) {
+        q->gyro_noise = (se23_real_t)fabs((double)fz_mild(f)) * (se23_real_t)1e-3;
+        q->accel_noise = (se23_real_t)fabs((double)fz_mild(f)) * (se23_real_t)1e-2;
+    } else {
+        q->gyro_noise = fz_real(f);
+        q->accel_noise = fz_real(f);
+    }
+    q->gyro_walk = fz_real(f);
+    q->accel_walk = fz_real(f);
+}
+
+static void bias_of(fz_t *f, se23_vec3_t *b_g, se23_vec3_t *b_a)
+{
+    if (fz_u8(f) < 64) {
+        memset(b_g, 0, sizeof *b_g);
+        memset(b_a, 0, sizeof *b_a);
+    } else if (fz_u8(f) < 224) {
+        fz_vec3_mild(f, b_g);
+        fz_vec3_mild(f, b_a);
+    } else {
+        fz_vec3(f, b_g);
+        fz_vec3(f, b_a);
+    }
+}
+
+static void check_factor(const se23_preint_unc_t *fu, const char *what)
+{
+    se23_status_t c = se23_preint_unc_check(fu);
+    FZ_REQUIRE(c == SE23_OK, "%s: OK but the factor fails se23_preint_unc_check (%d)", what, c);
+}
+
+static void one_correct(fz_t *f, const se23_preint_unc_t *fu)
+{
+    se23_vec3_t b_g, b_a;
+    se23_preint_t out;
+    se23_status_t st;
+    int classic;
+    bias_of(f, &b_g, &b_a);
+    for (classic = 0; classic < 2; ++classic) {
+        fz_fill(&out, sizeof out);
+        st = classic ? se23_preint_unc_correct_classic(fu, &b_g, &b_a, &out)
+                     : se23_preint_unc_correct(fu, &b_g, &b_a, &out);
+        FZ_REQUIRE(fz_status_in(st, 6, SE23_ERR_DOMAIN, SE23_ERR_NONFINITE, SE23_ERR_NOT_ROTATION,
+                                SE23_ERR_DT, SE23_ERR_NOT_SYMMETRIC, SE23_ERR_NOT_PSD),
+                   "correct%s: %d", classic ? "_classic" : "", st);
+        if (st != SE23_OK) {
+            FZ_REQUIRE(fz_untouched(&out, sizeof out), "correct%s wrote on error %d",
+                       classic ? "_classic" : "", st);
+            continue;
+        }
+        FZ_REQUIRE(FZ_FINITE_OBJ(out.delta) && isfinite(out.dt),
+                   "correct%s: OK with a non-finite factor", classic ? "_classic" : "");
+        FZ_REQUIRE(fz_is_rot(&out.delta.R), "correct%s: OK but Delta R not a rotation (check %d)",
+                   classic ? "_classic" : "", se23_so3_check(&out.delta.R));
+        FZ_REQUIRE(memcmp(&out.dt, &fu->f.dt, sizeof out.dt) == 0 && out.n == fu->f.n,
+                   "correct%s: dt or n not copied", classic ? "_classic" : "");
+    }
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    fz_t f;
+    se23_preint_unc_t fu, before;
+    se23_vec3_t b_g, b_a;
+    se23_input_jac_kind_t kind;
+    se23_imu_noise_t q;
+    se23_status_t st;
+    uint8_t m;
+    int k, n, classic;
+    fz_init(&f, data, size);
+    m = fz_u8(&f);
+    if (m >= 240) { /* a raw factor: only the functions that check it */
+        size_t i;
+        memset(&fu, 0, sizeof fu);
+        fz_pose(&f, &fu.f.delta);
+        fu.f.dt = fz_real(&f);
+        fu.f.n = fz_u32(&f);
+        fz_vec3(&f, &fu.b_g);
+        fz_vec3(&f, &fu.b_a);
+        fu.kind = (se23_input_jac_kind_t)fz_int(&f);
+        fu.classic = fz_int(&f);
+        fz_cov(&f, 9, 9, fu.P.m);
+        for (i = 0; i < 54; ++i) {
+            fu.J.m[i] = fz_u8(&f) < 192 ? 0 : fz_real(&f);
+        }
+        st = se23_preint_unc_check(&fu);
+        FZ_REQUIRE(fz_status_in(st, 6, SE23_ERR_DOMAIN, SE23_ERR_NONFINITE, SE23_ERR_NOT_ROTATION,
+                                SE23_ERR_DT, SE23_ERR_NOT_SYMMETRIC, SE23_ERR_NOT_PSD),
+                   "check: %d", st);
+        one_correct(&f, &fu);
+        return 0;
+    }
+    bias_of(&f, &b_g, &b_a);
+    kind = (se23_input_jac_kind_t)(fz_u8(&f) < 248 ? (m & 1) : fz_int(&f));
+    classic = (m >> 1) & 1;
+    fz_fill(&fu, sizeof fu);
+    st = classic ? se23_preint_unc_reset_classic(&b_g, &b_a, kind, &fu)
+                 : se23_preint_unc_reset(&b_g, &b_a, kind, &fu);
+    FZ_REQUIRE(fz_status_in(st, 2, SE23_ERR_NONFINITE, SE23_ERR_DOMAIN), "reset: %d", st);
+    if (st != SE23_OK) {
+        FZ_REQUIRE(fz_untouched(&fu, sizeof fu), "reset wrote on error %d", st);
+        return 0;
+    }
+    check_factor(&fu, classic ? "reset_classic" : "reset");
+    noise_of(&f, &q);
+    n = fz_u8(&f) % 48;
+    for (k = 0; k < n && fz_left(&f); ++k) {
+        se23_imu_sample_t s;
+        if (fz_u8(&f) < 16) {
+            noise_of(&f, &q);
+        }
+        fz_sample(&f, &s);
+        memcpy(&before, &fu, sizeof fu);
+        st = se23_preint_unc_add(&fu, &s, &q);
+        FZ_REQUIRE(fz_status_in(st, 3, SE23_ERR_NONFINITE, SE23_ERR_DT, SE23_ERR_DOMAIN),
+                   "add: %d", st);
+        if (st != SE23_OK) {
+            FZ_REQUIRE(memcmp(&fu, &before, sizeof fu) == 0, "add changed the factor on error %d",
+                       st);
+            continue;
+        }
+        FZ_REQUIRE(fu.f.n == before.f.n + 1u, "add: n %u -> %u", (unsigned)before.f.n,
+                   (unsigned)fu.f.n);
+        if (!fz_check_cov_result(se23_preint_unc_check(&fu), fu.P.m, 9, 9,
+                                 fz_sample_bound(&s, &fu.b_g, &fu.b_a, fu.kind, &q, 0, before.P.m,
+                                                 9, 9),
+                                 "add")) {
+            return 0; /* the known finding: not a factor to go on with */
+        }
+    }
+    one_correct(&f, &fu);
+    return 0;
+}
