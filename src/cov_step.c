@@ -1,10 +1,12 @@
 /* Per-sample covariance kernels by 3x3 blocks; see cov_step.h for the
  * factored transition they evaluate.
  *
- * Notation: X_ij, C_ik and Bb_kl are the 3x3 blocks of P (pose x pose,
- * pose x bias, bias x bias), i, j in {phi, nu, rho}, k, l in {g, a}; only
- * blocks with i <= j (k <= l) are read. With W = G X (rows of G:
- * [I, 0, 0], [-v^, I, 0], [-p^, dt I, I]),
+ * The covariance step itself (se23_cov_step) is straight-line code that
+ * tools/gen/gen_cov_step.py generates into cov_step_kernel.c from this
+ * block algorithm. Notation: X_ij, C_ik and Bb_kl are the 3x3 blocks of P
+ * (pose x pose, pose x bias, bias x bias), i, j in {phi, nu, rho}, k, l in
+ * {g, a}; only blocks with i <= j (k <= l) are read. With W = G X (rows of
+ * G: [I, 0, 0], [-v^, I, 0], [-p^, dt I, I]),
  *   W_0j = X_0j,  W_1j = X_1j - v^ X_0j,  W_2j = X_2j + dt X_1j - p^ X_0j,
  * and A = W G^T:
  *   A_i0 = W_i0,  A_i1 = W_i0 v^ + W_i1,  A_i2 = W_i0 p^ + dt W_i1 + W_i2.
@@ -12,16 +14,14 @@
  *   E_ij = Bt_i (Z_j + Bt_j N)^T + Y_i Bt_j^T
  * ([G Bt] P [G Bt]^T = G X G^T + G C Bt^T + Bt C^T G^T + Bt Bb Bt^T), the
  * cross block is D Z and the bias block Bb + W. Without bias states
- * E_ij = Bt_i N Bt_j^T. Every block is finally rotated, R^T (A_ij + E_ij) R.
+ * E_ij = Bt_i N Bt_j^T. Every block is finally rotated, R^T (A_ij + E_ij) R;
+ * the diagonal blocks' upper triangles are computed and mirrored, so P+ is
+ * exactly symmetric.
  *
- * In place: the pose blocks are written in the order (2,2), (1,2), (1,1),
- * (0,2), (0,1), (0,0), each after the last read of the block it replaces
- * (A_22 needs every X_ij; A_12 no longer X_22; ...); the cross blocks hold Z
- * until the pose blocks are done.
- *
- * Operation count (multiply-adds, 9 states / 15 states): shear G X G^T 330,
- * input terms E 250 / 760, Y and Z 0 / 380, rotations 300 / 460; about
- * 880 / 1930 in all. */
+ * In place: the pose blocks are computed in the order (2,2), (1,2), (1,1),
+ * (0,2), (0,1), (0,0) (A_22 needs every X_ij; A_12 no longer X_22; ...), and
+ * the generator stores each entry after the read of the entry of P it
+ * replaces. Operation counts: cov_step_kernel.c. */
 #include "cov_step.h"
 
 #include <float.h>
@@ -111,164 +111,6 @@ static void blk_store_sym(se23_real_t *P, int stride, int r0,
     c[2] = A->m[2][2];
 }
 
-/* The inputs every block of one step needs. */
-typedef struct {
-    const se23_pose_t *U;
-    se23_real_t dt;
-    const se23_input_blocks_t *Bt;
-    const se23_step_noise_t *q;
-    int bias;                /* 1 for 15 states, 0 for 9 */
-    se23_input_blocks_t *Y;  /* G C (bias states only) */
-    const se23_real_t *P;    /* P, upper triangle read */
-    se23_real_t *out;        /* P+, may alias P */
-    int stride;
-} step_t;
-
-/* E += the input terms of pose block (i, j), i <= j (file comment); the
- * products with Bt's zero block (phi rows, accel columns) are skipped. */
-static void acc_input_terms(const step_t *s, int i, int j, se23_mat3_t *E)
-{
-    for (int k = GYR; k <= ACC; ++k) {
-        if ((s->bias != 0) && !((j == PHI) && (k == ACC))) {
-            se23_m3_acc_mul_nt(E, &s->Y->blk[i][k], &s->Bt->blk[j][k]);
-        }
-        if (i == PHI && k == ACC) {
-            continue;
-        }
-        const se23_real_t qk = (k == GYR) ? s->q->qg : s->q->qa;
-        if (s->bias != 0) {
-            se23_mat3_t Zq; /* Z_jk + q_k Bt_jk */
-            blk_load(s->out, s->stride, 3 * j, 9 + 3 * k, &Zq);
-            se23_m3_axpy(&Zq, qk, &s->Bt->blk[j][k], &Zq);
-            se23_m3_acc_mul_nt(E, &s->Bt->blk[i][k], &Zq);
-        } else {
-            se23_m3_acc_mul_nt_scaled(E, &s->Bt->blk[i][k], qk, &s->Bt->blk[j][k]);
-        }
-    }
-}
-
-/* Pose block (i, j) of P+ from its pre-rotation value A_ij. */
-static void finish_pose_block(step_t *s, int i, int j, se23_mat3_t *Aij)
-{
-    acc_input_terms(s, i, j, Aij);
-    se23_m3_congruence_tn(&s->U->R, Aij, i == j, Aij);
-    if (i == j) {
-        blk_store_sym(s->out, s->stride, 3 * i, Aij);
-    } else {
-        blk_store_pair(s->out, s->stride, 3 * i, 3 * j, Aij);
-    }
-}
-
-/* Y = G C, then Z = Y + Bt Bb into the cross blocks of out (n = 15, first
- * step; every read of C comes before the first store). */
-static void bias_cross_terms(step_t *s)
-{
-    const se23_vec3_t *v = &s->U->v, *p = &s->U->p;
-    for (int k = GYR; k <= ACC; ++k) {
-        se23_mat3_t c1;
-        se23_mat3_t *Y0 = &s->Y->blk[PHI][k], *Y1 = &s->Y->blk[NU][k],
-                    *Y2 = &s->Y->blk[RHO][k];
-        blk_load(s->P, s->stride, 0, 9 + 3 * k, Y0);
-        blk_load(s->P, s->stride, 3, 9 + 3 * k, &c1);
-        blk_load(s->P, s->stride, 6, 9 + 3 * k, Y2);
-        *Y1 = c1;
-        se23_m3_acc_skew_mul(Y1, SE23_R(-1), v, Y0);
-        se23_m3_axpy(Y2, s->dt, &c1, Y2);
-        se23_m3_acc_skew_mul(Y2, SE23_R(-1), p, Y0);
-    }
-    se23_mat3_t Bb[2][2];
-    blk_load(s->P, s->stride, 9, 9, &Bb[GYR][GYR]);
-    blk_load(s->P, s->stride, 9, 12, &Bb[GYR][ACC]);
-    blk_load(s->P, s->stride, 12, 12, &Bb[ACC][ACC]);
-    se23_m3_transpose(&Bb[GYR][ACC], &Bb[ACC][GYR]);
-    for (int i = PHI; i <= RHO; ++i) {
-        for (int k = GYR; k <= ACC; ++k) {
-            se23_mat3_t Z = s->Y->blk[i][k];
-            se23_m3_acc_mul(&Z, &s->Bt->blk[i][GYR], &Bb[GYR][k]);
-            if (i != PHI) {
-                se23_m3_acc_mul(&Z, &s->Bt->blk[i][ACC], &Bb[ACC][k]);
-            }
-            blk_store(s->out, s->stride, 3 * i, 9 + 3 * k, &Z);
-        }
-    }
-}
-
-/* The pose blocks, in the in-place order of the file comment. */
-static void pose_blocks(step_t *s)
-{
-    const se23_vec3_t *v = &s->U->v, *p = &s->U->p;
-    const se23_real_t dt = s->dt;
-    se23_mat3_t X00, X01, X02, X11, X12, W0, W1, W2, Aij;
-    blk_load(s->P, s->stride, 0, 0, &X00);
-    blk_load(s->P, s->stride, 0, 3, &X01);
-    blk_load(s->P, s->stride, 0, 6, &X02);
-    blk_load(s->P, s->stride, 3, 3, &X11);
-    blk_load(s->P, s->stride, 3, 6, &X12);
-
-    /* (2,2): W_2j = X_2j + dt X_1j - p^ X_0j; A_22 = W_20 p^ + dt W_21 + W_22. */
-    se23_m3_transpose(&X02, &W0);
-    se23_m3_transpose(&X01, &Aij);
-    se23_m3_axpy(&W0, dt, &Aij, &W0);
-    se23_m3_acc_skew_mul(&W0, SE23_R(-1), p, &X00);
-    se23_m3_transpose(&X12, &W1);
-    se23_m3_axpy(&W1, dt, &X11, &W1);
-    se23_m3_acc_skew_mul(&W1, SE23_R(-1), p, &X01);
-    blk_load(s->P, s->stride, 6, 6, &W2);
-    se23_m3_axpy(&W2, dt, &X12, &W2);
-    se23_m3_acc_skew_mul(&W2, SE23_R(-1), p, &X02);
-    Aij = W2;
-    se23_m3_axpy(&Aij, dt, &W1, &Aij);
-    se23_m3_acc_mul_skew(&Aij, &W0, p);
-    finish_pose_block(s, RHO, RHO, &Aij);
-
-    /* (1,2) and (1,1): W_1j = X_1j - v^ X_0j. */
-    se23_m3_transpose(&X01, &W0);
-    se23_m3_acc_skew_mul(&W0, SE23_R(-1), v, &X00);
-    W1 = X11;
-    se23_m3_acc_skew_mul(&W1, SE23_R(-1), v, &X01);
-    Aij = X12;
-    se23_m3_acc_skew_mul(&Aij, SE23_R(-1), v, &X02); /* W_12 */
-    se23_m3_axpy(&Aij, dt, &W1, &Aij);
-    se23_m3_acc_mul_skew(&Aij, &W0, p);
-    finish_pose_block(s, NU, RHO, &Aij);
-    Aij = W1;
-    se23_m3_acc_mul_skew(&Aij, &W0, v);
-    finish_pose_block(s, NU, NU, &Aij);
-
-    /* Row 0: W_0j = X_0j. */
-    Aij = X02;
-    se23_m3_axpy(&Aij, dt, &X01, &Aij);
-    se23_m3_acc_mul_skew(&Aij, &X00, p);
-    finish_pose_block(s, PHI, RHO, &Aij);
-    Aij = X01;
-    se23_m3_acc_mul_skew(&Aij, &X00, v);
-    finish_pose_block(s, PHI, NU, &Aij);
-    Aij = X00;
-    finish_pose_block(s, PHI, PHI, &Aij);
-}
-
-/* Cross blocks D Z and bias block Bb + W (n = 15, last step). */
-static void bias_blocks(step_t *s)
-{
-    const int st = s->stride;
-    for (int i = PHI; i <= RHO; ++i) {
-        for (int k = GYR; k <= ACC; ++k) {
-            se23_mat3_t Z, out;
-            blk_load(s->out, st, 3 * i, 9 + 3 * k, &Z);
-            se23_m3_mul_tn(&s->U->R, &Z, &out);
-            blk_store_pair(s->out, st, 3 * i, 9 + 3 * k, &out);
-        }
-    }
-    for (int r = 9; r < 15; ++r) {
-        s->out[st * r + r] = s->P[st * r + r] + ((r < 12) ? s->q->wg : s->q->wa);
-        for (int c = r + 1; c < 15; ++c) {
-            const se23_real_t x = s->P[st * r + c];
-            s->out[st * r + c] = x;
-            s->out[st * c + r] = x;
-        }
-    }
-}
-
 int se23_input_blocks_finite(const se23_input_blocks_t *Bt)
 {
     for (int i = PHI; i <= RHO; ++i) {
@@ -346,26 +188,10 @@ void se23_cov_step(const se23_pose_t *U, se23_real_t dt,
                    const se23_input_blocks_t *Bt, const se23_step_noise_t *q,
                    int n, const se23_real_t *P, se23_real_t *out, int stride)
 {
-    se23_input_blocks_t Y;
-    step_t s;
-    s.U = U;
-    s.dt = dt;
-    s.Bt = Bt;
-    s.q = q;
-    s.bias = 0;
     if (n == SE23_GAUSS_N_BIAS) {
-        s.bias = 1;
-    }
-    s.Y = &Y;
-    s.P = P;
-    s.out = out;
-    s.stride = stride;
-    if (s.bias != 0) {
-        bias_cross_terms(&s);
-    }
-    pose_blocks(&s);
-    if (s.bias != 0) {
-        bias_blocks(&s);
+        se23_cov_step15(U, dt, Bt, q, P, out, stride);
+    } else {
+        se23_cov_step9(U, dt, Bt, q, P, out, stride);
     }
 }
 

@@ -223,63 +223,8 @@ void se23_m3_series(se23_real_t a0, se23_real_t a1, se23_real_t a2,
  * and sum c + a0 b0 + a1 b1 + a2 b2 left to right: three fused
  * multiply-adds where the target has them. */
 
-void se23_m3_acc_mul(se23_mat3_t *C, const se23_mat3_t *A, const se23_mat3_t *B)
-{
-    const se23_real_t a00 = A->m[0][0], a01 = A->m[0][1], a02 = A->m[0][2];
-    const se23_real_t a10 = A->m[1][0], a11 = A->m[1][1], a12 = A->m[1][2];
-    const se23_real_t a20 = A->m[2][0], a21 = A->m[2][1], a22 = A->m[2][2];
-    const se23_real_t b00 = B->m[0][0], b01 = B->m[0][1], b02 = B->m[0][2];
-    const se23_real_t b10 = B->m[1][0], b11 = B->m[1][1], b12 = B->m[1][2];
-    const se23_real_t b20 = B->m[2][0], b21 = B->m[2][1], b22 = B->m[2][2];
-    C->m[0][0] = C->m[0][0] + a00 * b00 + a01 * b10 + a02 * b20;
-    C->m[0][1] = C->m[0][1] + a00 * b01 + a01 * b11 + a02 * b21;
-    C->m[0][2] = C->m[0][2] + a00 * b02 + a01 * b12 + a02 * b22;
-    C->m[1][0] = C->m[1][0] + a10 * b00 + a11 * b10 + a12 * b20;
-    C->m[1][1] = C->m[1][1] + a10 * b01 + a11 * b11 + a12 * b21;
-    C->m[1][2] = C->m[1][2] + a10 * b02 + a11 * b12 + a12 * b22;
-    C->m[2][0] = C->m[2][0] + a20 * b00 + a21 * b10 + a22 * b20;
-    C->m[2][1] = C->m[2][1] + a20 * b01 + a21 * b11 + a22 * b21;
-    C->m[2][2] = C->m[2][2] + a20 * b02 + a21 * b12 + a22 * b22;
-}
 
-void se23_m3_acc_mul_nt(se23_mat3_t *C, const se23_mat3_t *A, const se23_mat3_t *B)
-{
-    const se23_real_t a00 = A->m[0][0], a01 = A->m[0][1], a02 = A->m[0][2];
-    const se23_real_t a10 = A->m[1][0], a11 = A->m[1][1], a12 = A->m[1][2];
-    const se23_real_t a20 = A->m[2][0], a21 = A->m[2][1], a22 = A->m[2][2];
-    const se23_real_t b00 = B->m[0][0], b01 = B->m[0][1], b02 = B->m[0][2];
-    const se23_real_t b10 = B->m[1][0], b11 = B->m[1][1], b12 = B->m[1][2];
-    const se23_real_t b20 = B->m[2][0], b21 = B->m[2][1], b22 = B->m[2][2];
-    C->m[0][0] = C->m[0][0] + a00 * b00 + a01 * b01 + a02 * b02;
-    C->m[0][1] = C->m[0][1] + a00 * b10 + a01 * b11 + a02 * b12;
-    C->m[0][2] = C->m[0][2] + a00 * b20 + a01 * b21 + a02 * b22;
-    C->m[1][0] = C->m[1][0] + a10 * b00 + a11 * b01 + a12 * b02;
-    C->m[1][1] = C->m[1][1] + a10 * b10 + a11 * b11 + a12 * b12;
-    C->m[1][2] = C->m[1][2] + a10 * b20 + a11 * b21 + a12 * b22;
-    C->m[2][0] = C->m[2][0] + a20 * b00 + a21 * b01 + a22 * b02;
-    C->m[2][1] = C->m[2][1] + a20 * b10 + a21 * b11 + a22 * b12;
-    C->m[2][2] = C->m[2][2] + a20 * b20 + a21 * b21 + a22 * b22;
-}
 
-void se23_m3_acc_mul_nt_scaled(se23_mat3_t *C, const se23_mat3_t *A, se23_real_t s,
-                               const se23_mat3_t *B)
-{
-    const se23_real_t a00 = A->m[0][0], a01 = A->m[0][1], a02 = A->m[0][2];
-    const se23_real_t a10 = A->m[1][0], a11 = A->m[1][1], a12 = A->m[1][2];
-    const se23_real_t a20 = A->m[2][0], a21 = A->m[2][1], a22 = A->m[2][2];
-    const se23_real_t b00 = s * B->m[0][0], b01 = s * B->m[0][1], b02 = s * B->m[0][2];
-    const se23_real_t b10 = s * B->m[1][0], b11 = s * B->m[1][1], b12 = s * B->m[1][2];
-    const se23_real_t b20 = s * B->m[2][0], b21 = s * B->m[2][1], b22 = s * B->m[2][2];
-    C->m[0][0] = C->m[0][0] + a00 * b00 + a01 * b01 + a02 * b02;
-    C->m[0][1] = C->m[0][1] + a00 * b10 + a01 * b11 + a02 * b12;
-    C->m[0][2] = C->m[0][2] + a00 * b20 + a01 * b21 + a02 * b22;
-    C->m[1][0] = C->m[1][0] + a10 * b00 + a11 * b01 + a12 * b02;
-    C->m[1][1] = C->m[1][1] + a10 * b10 + a11 * b11 + a12 * b12;
-    C->m[1][2] = C->m[1][2] + a10 * b20 + a11 * b21 + a12 * b22;
-    C->m[2][0] = C->m[2][0] + a20 * b00 + a21 * b01 + a22 * b02;
-    C->m[2][1] = C->m[2][1] + a20 * b10 + a21 * b11 + a22 * b12;
-    C->m[2][2] = C->m[2][2] + a20 * b20 + a21 * b21 + a22 * b22;
-}
 
 /* Column j of v^ A is v x A_j. */
 void se23_m3_acc_skew_mul(se23_mat3_t *C, se23_real_t s, const se23_vec3_t *v,
@@ -318,26 +263,6 @@ void se23_m3_acc_mul_skew(se23_mat3_t *C, const se23_mat3_t *A, const se23_vec3_
     C->m[2][2] = C->m[2][2] + a20 * y - a21 * x;
 }
 
-void se23_m3_congruence_tn(const se23_mat3_t *R, const se23_mat3_t *A, int sym,
-                           se23_mat3_t *out)
-{
-    se23_mat3_t T;
-    se23_m3_mul_tn(R, A, &T);
-    const se23_real_t r00 = R->m[0][0], r01 = R->m[0][1], r02 = R->m[0][2];
-    const se23_real_t r10 = R->m[1][0], r11 = R->m[1][1], r12 = R->m[1][2];
-    const se23_real_t r20 = R->m[2][0], r21 = R->m[2][1], r22 = R->m[2][2];
-    out->m[0][0] = T.m[0][0] * r00 + T.m[0][1] * r10 + T.m[0][2] * r20;
-    out->m[0][1] = T.m[0][0] * r01 + T.m[0][1] * r11 + T.m[0][2] * r21;
-    out->m[0][2] = T.m[0][0] * r02 + T.m[0][1] * r12 + T.m[0][2] * r22;
-    out->m[1][1] = T.m[1][0] * r01 + T.m[1][1] * r11 + T.m[1][2] * r21;
-    out->m[1][2] = T.m[1][0] * r02 + T.m[1][1] * r12 + T.m[1][2] * r22;
-    out->m[2][2] = T.m[2][0] * r02 + T.m[2][1] * r12 + T.m[2][2] * r22;
-    if (!sym) {
-        out->m[1][0] = T.m[1][0] * r00 + T.m[1][1] * r10 + T.m[1][2] * r20;
-        out->m[2][0] = T.m[2][0] * r00 + T.m[2][1] * r10 + T.m[2][2] * r20;
-        out->m[2][1] = T.m[2][0] * r01 + T.m[2][1] * r11 + T.m[2][2] * r21;
-    }
-}
 
 se23_real_t se23_m3_orthonormalize_step(se23_mat3_t *X, se23_real_t done,
                                         se23_real_t max_drift)

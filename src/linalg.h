@@ -63,26 +63,15 @@ void se23_m3_skew(const se23_vec3_t *v, se23_mat3_t *out);
 se23_real_t se23_m3_det(const se23_mat3_t *A);
 
 /*
- * Accumulating 3x3 kernels of the covariance steps (cov_step.c, kalman.c):
+ * Accumulating 3x3 kernels of the covariance steps (cov_step.c):
  * written out, no loops; C is updated in place and may alias the other
  * operands (they are read before the first store). Multiply-add counts in brackets.
  */
-/** C += A B [27] */
-void se23_m3_acc_mul(se23_mat3_t *C, const se23_mat3_t *A, const se23_mat3_t *B);
-/** C += A B^T [27] */
-void se23_m3_acc_mul_nt(se23_mat3_t *C, const se23_mat3_t *A, const se23_mat3_t *B);
-/** C += s A B^T [27 + 9] */
-void se23_m3_acc_mul_nt_scaled(se23_mat3_t *C, const se23_mat3_t *A, se23_real_t s,
-                               const se23_mat3_t *B);
 /** C += s v^ A [18 + 3] */
 void se23_m3_acc_skew_mul(se23_mat3_t *C, se23_real_t s, const se23_vec3_t *v,
                           const se23_mat3_t *A);
 /** C += A v^ [18] */
 void se23_m3_acc_mul_skew(se23_mat3_t *C, const se23_mat3_t *A, const se23_vec3_t *v);
-/** out = R^T A R; with sym != 0 only the upper triangle of out is written
- *  (A symmetric) [54 / 45]. out may alias A. */
-void se23_m3_congruence_tn(const se23_mat3_t *R, const se23_mat3_t *A, int sym,
-                           se23_mat3_t *out);
 
 /**
  * Measures the drift d = max |(X^T X - I)_ij| and, if done < d <= max_drift,

@@ -35,3 +35,6 @@ check cppcheck-rejects-fixture sh -c '! "$@"' sh $STATIC_CPPCHECK \
     tests/target/gate_fixtures/bad_static.c
 check clang-tidy-rejects-fixture sh -c '! clang-tidy --quiet "$1" -- -std=c99' sh \
     tests/target/gate_fixtures/bad_static.c
+# Generated code is current: src/cov_step_kernel.c is what
+# tools/gen/gen_cov_step.py writes (edit the generator, not the file).
+check gen-cov-step-current /usr/bin/python3 tools/gen/gen_cov_step.py --check

@@ -1,0 +1,378 @@
+#!/usr/bin/env python3
+"""Writes src/cov_step_kernel.c, the per-sample covariance kernels of
+cov_step.h as straight-line code, one function for 9 states and one for 15.
+
+  python3 tools/gen/gen_cov_step.py           write the file
+  python3 tools/gen/gen_cov_step.py --check   exit 1 if it is not current
+
+The algorithm is the block form of cov_step.h / cov_step.c's file comment
+(shear G, input terms E, rotation D, by 3x3 blocks, upper triangles of the
+symmetric blocks only). This script expands every block product into
+scalar statements, skips the products with structural zeros (v^ and p^
+have zero diagonals, Bt's phi row has no accel block, dt I is diagonal),
+and counts the arithmetic it emits. Every entry of P is read once, into a
+local, and each entry of out is stored once, after the read of the entry
+it overwrites: out may alias P.
+"""
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+OUT = os.path.join(HERE, "..", "..", "src", "cov_step_kernel.c")
+
+
+class Gen:
+    """Emits the statements of one function. An entry of a 3x3 block is
+    None (a structural zero) or (sign, name) of a scalar local."""
+
+    def __init__(self, used=None):
+        self.lines = []
+        self.ntmp = 0
+        self.muls = 0
+        self.adds = 0
+        self.loaded = set()
+        self.used = used if used is not None else set()  # P entries read at all
+        self.record = used is None
+        self.pending = []  # (row, col, entry) stores not yet emitted
+        self.lazy = []  # [emitted entry or None, base, products] per sum
+        self.inputs = {}  # local -> its read from U, Bt or q, declared at first use
+
+    # --- loads of P, lazy ---------------------------------------------------
+    def p_name(self, r, c):
+        return "p%d_%d" % (r, c)
+
+    def load(self, r, c):
+        name = self.p_name(r, c)
+        if self.record:
+            self.used.add((r, c))
+        if name not in self.loaded:
+            self.loaded.add(name)
+            self.lines.append("const se23_real_t %s = P[%s];" % (name, index(r, c)))
+        return (1, name)
+
+    def p_block(self, r0, c0):
+        """The 3x3 block of P at (r0, c0), r0 <= c0 (upper triangle)."""
+        blk = [[None] * 3 for _ in range(3)]
+        for a in range(3):
+            for b in range(3):
+                r, c = r0 + a, c0 + b
+                if r <= c:
+                    blk[a][b] = ("P", r, c)
+                else:
+                    blk[a][b] = ("P", c, r)
+        return blk
+
+    def value(self, e):
+        """The local of an entry: a lazily loaded P entry is read, a lazy
+        sum (from lin) is emitted, the first time either is needed."""
+        if e is None:
+            return None
+        if e[0] == "P":
+            return self.load(e[1], e[2])
+        if e[0] == "L":
+            lazy = self.lazy[e[1]]
+            if lazy[0] is None:
+                base, products = lazy[1], lazy[2]
+                terms = []
+                if base is not None:
+                    s, nm = self.value(base)
+                    terms.append((s, [nm]))
+                for a, b in products:
+                    sa, na = self.value(a)
+                    sb, nb = self.value(b)
+                    terms.append((sa * sb, [na, nb]))
+                lazy[0] = self.emit(terms)
+            return lazy[0]
+        return e
+
+    # --- statements ---------------------------------------------------------
+    def emit(self, terms):
+        """Local = the signed sum of products `terms` [(sign, [names])]; a
+        single unsigned factor is returned as it is, without a statement."""
+        if not terms:
+            return None
+        if len(terms) == 1 and len(terms[0][1]) == 1:
+            return (terms[0][0], terms[0][1][0])
+        # a lone factor (the block being added to) goes first
+        terms = sorted(terms, key=lambda t: len(t[1]))
+        for _, factors in terms:
+            for f in factors:
+                if f in self.inputs:
+                    self.lines.append("const se23_real_t %s = %s;" % (f, self.inputs.pop(f)))
+        out = ""
+        for n, (sign, factors) in enumerate(terms):
+            prod = " * ".join(factors)
+            self.muls += len(factors) - 1
+            if n == 0:
+                out = ("-" if sign < 0 else "") + prod
+            else:
+                self.adds += 1
+                out += (" - " if sign < 0 else " + ") + prod
+        self.ntmp += 1
+        name = "t%d" % self.ntmp
+        self.lines.append("const se23_real_t %s = %s;" % (name, out))
+        self.flush()
+        return (1, name)
+
+    def lin(self, pairs, base=None, sym=False):
+        """base + sum of L M over pairs (L, M); with sym the result is
+        symmetric: the upper triangle is computed and mirrored. Entries
+        are emitted when first needed, so unused ones cost nothing."""
+        out = [[None] * 3 for _ in range(3)]
+        for i in range(3):
+            for j in range(i if sym else 0, 3):
+                b = base[i][j] if base is not None else None
+                products = [(L[i][k], M[k][j]) for L, M in pairs for k in range(3)
+                            if L[i][k] is not None and M[k][j] is not None]
+                if b is None and not products:
+                    continue
+                self.lazy.append([None, b, products])
+                out[i][j] = ("L", len(self.lazy) - 1)
+                if sym:
+                    out[j][i] = out[i][j]
+        return out
+
+    def scale(self, s, B):
+        """s B, s the name of a scalar."""
+        return self.lin([(diag(s), B)])
+
+    # --- stores -------------------------------------------------------------
+    def store_block(self, r0, c0, blk, mirror):
+        for a in range(3):
+            for b in range(3):
+                e = self.value(blk[a][b])
+                self.pending.append((r0 + a, c0 + b, e))
+                if mirror:
+                    self.pending.append((c0 + b, r0 + a, e))
+        self.flush()
+
+    def store(self, r, c, e):
+        self.pending.append((r, c, self.value(e)))
+        self.flush()
+
+    def flush(self):
+        """Emits every pending store whose location's value in P is no
+        longer needed: read already, or never read."""
+        keep = []
+        for r, c, e in self.pending:
+            name = self.p_name(r, c)
+            if (r, c) in self.used and name not in self.loaded:
+                keep.append((r, c, e))
+                continue
+            if e is None:
+                rhs = "SE23_R(0)"
+            else:
+                rhs = ("-" if e[0] < 0 else "") + e[1]
+            self.lines.append("out[%s] = %s;" % (index(r, c), rhs))
+        self.pending = keep
+
+    def finish(self):
+        """The stores still waiting: load their entries first."""
+        for r, c, _ in self.pending:
+            self.load(r, c)
+        self.flush()
+        assert not self.pending
+
+
+def index(r, c):
+    """The C index of entry (r, c) in a matrix of row stride `stride`."""
+    row = {0: "", 1: "stride"}.get(r, "(stride * %d)" % r)
+    if not row:
+        return "%d" % c
+    return row if c == 0 else "%s + %d" % (row, c)
+
+
+def diag(s):
+    return [[(1, s) if i == j else None for j in range(3)] for i in range(3)]
+
+
+def skew(v, sign):
+    """sign v^ for the vector of locals v0, v1, v2."""
+    x, y, z = v + "0", v + "1", v + "2"
+    return [[None, (-sign, z), (sign, y)],
+            [(sign, z), None, (-sign, x)],
+            [(-sign, y), (sign, x), None]]
+
+
+def tr(B):
+    return [[B[j][i] for j in range(3)] for i in range(3)]
+
+
+def named(prefix):
+    return [[(1, "%s%d%d" % (prefix, i, j)) for j in range(3)] for i in range(3)]
+
+
+PHI, NU, RHO = 0, 1, 2
+
+
+def kernel(g, bias):
+    """The covariance step (cov_step.h) on Gen g; bias: 15 states."""
+    R = named("r")
+    Rt = tr(R)
+    Vp, Vm = skew("vel", 1), skew("vel", -1)
+    Pp, Pm = skew("pos", 1), skew("pos", -1)
+    dtI = diag("dt")
+    Bt = [[named("b%d%d_" % (i, k)) if not (i == PHI and k == 1) else None
+           for k in range(2)] for i in range(3)]
+    qs = ["qg", "qa"]
+
+    def X(i, j):
+        return g.p_block(3 * i, 3 * j) if i <= j else tr(g.p_block(3 * j, 3 * i))
+
+    def shear(B0, B1, B2):
+        """The rows of G [B0; B1; B2]: B0, B1 - v^ B0, B2 + dt B1 - p^ B0."""
+        return (B0, g.lin([(Vm, B0)], base=B1), g.lin([(dtI, B1), (Pm, B0)], base=B2))
+
+    # W = G X, by block columns j; W_0j = X_0j.
+    W = [[None] * 3 for _ in range(3)]
+    for j in range(3):
+        W[0][j], W[1][j], W[2][j] = X(0, j), None, None
+    # Y = G C and Z = Y + Bt Bb (15 states)
+    if bias:
+        Bb = [[g.p_block(9 + 3 * k, 9 + 3 * l) if k <= l else tr(g.p_block(9 + 3 * l, 9 + 3 * k))
+               for l in range(2)] for k in range(2)]
+        Y = [[None] * 2 for _ in range(3)]
+        Z = [[None] * 2 for _ in range(3)]
+        for k in range(2):
+            Y[0][k], Y[1][k], Y[2][k] = shear(g.p_block(0, 9 + 3 * k), g.p_block(3, 9 + 3 * k),
+                                              g.p_block(6, 9 + 3 * k))
+            for i in range(3):
+                pairs = [(Bt[i][l], Bb[l][k]) for l in range(2) if Bt[i][l] is not None]
+                Z[i][k] = g.lin(pairs, base=Y[i][k])
+        # (Z_jk + q_k Bt_jk)^T
+        Zq = [[tr(g.lin([(diag(qs[k]), Bt[j][k])], base=Z[j][k])) if Bt[j][k] is not None
+               else tr(Z[j][k]) for k in range(2)] for j in range(3)]
+    else:
+        qBtT = [[tr(g.scale(qs[k], Bt[j][k])) if Bt[j][k] is not None else None
+                 for k in range(2)] for j in range(3)]
+
+    def input_pairs(i, j):
+        """E_ij as pairs (file comment of cov_step.c)."""
+        pairs = []
+        for k in range(2):
+            if Bt[i][k] is None:
+                pass
+            elif bias:
+                pairs.append((Bt[i][k], Zq[j][k]))
+            elif qBtT[j][k] is not None:
+                pairs.append((Bt[i][k], qBtT[j][k]))
+            if bias and Bt[j][k] is not None:
+                pairs.append((Y[i][k], tr(Bt[j][k])))
+        return pairs
+
+    def finish(i, j, A_pairs, A_base):
+        """out block (i, j) = R^T (A_ij + E_ij) R, and its mirror."""
+        S = g.lin(A_pairs + input_pairs(i, j), base=A_base, sym=(i == j))
+        T = g.lin([(Rt, S)])
+        O = g.lin([(T, R)], sym=(i == j))
+        g.store_block(3 * i, 3 * j, O, mirror=(i != j))
+
+    # The in-place order: (2,2), (1,2), (1,1), (0,2), (0,1), (0,0).
+    W[1][0], W[2][0] = shear(X(0, 0), X(1, 0), X(2, 0))[1:]
+    W[1][1], W[2][1] = shear(X(0, 1), X(1, 1), X(2, 1))[1:]
+    W[1][2], W[2][2] = shear(X(0, 2), X(1, 2), X(2, 2))[1:]
+    # A_i2 = W_i0 p^ + dt W_i1 + W_i2, A_i1 = W_i0 v^ + W_i1, A_00 = W_00.
+    finish(RHO, RHO, [(W[2][0], Pp), (W[2][1], dtI)], W[2][2])
+    finish(NU, RHO, [(W[1][0], Pp), (W[1][1], dtI)], W[1][2])
+    finish(NU, NU, [(W[1][0], Vp)], W[1][1])
+    finish(PHI, RHO, [(W[0][0], Pp), (W[0][1], dtI)], W[0][2])
+    finish(PHI, NU, [(W[0][0], Vp)], W[0][1])
+    finish(PHI, PHI, [], W[0][0])
+    if bias:
+        for i in range(3):
+            for k in range(2):
+                g.store_block(3 * i, 9 + 3 * k, g.lin([(Rt, Z[i][k])]), mirror=True)
+        ws = ["wg", "wa"]
+        for k in range(2):
+            for l in range(k, 2):
+                blk = Bb[k][l]
+                for a in range(3):
+                    for b in range(3):
+                        r, c = 9 + 3 * k + a, 9 + 3 * l + b
+                        if r > c:
+                            continue
+                        e = blk[a][b]
+                        if r == c:
+                            e = g.value(e)
+                            e = g.emit([(e[0], [e[1]]), (1, [ws[k]])])
+                        g.store(r, c, e)
+                        if r != c:
+                            g.store(c, r, e)
+    g.finish()
+
+
+def inputs(bias):
+    """The locals of U, Bt and q: read where first used (they cannot alias
+    out, so their reads may follow stores)."""
+    ins = {}
+    for i in range(3):
+        for j in range(3):
+            ins["r%d%d" % (i, j)] = "U->R.m[%d][%d]" % (i, j)
+        ins["vel%d" % i] = "U->v.v[%d]" % i
+        ins["pos%d" % i] = "U->p.v[%d]" % i
+        for k in range(2):
+            if i == PHI and k == 1:
+                continue
+            for a in range(3):
+                for b in range(3):
+                    ins["b%d%d_%d%d" % (i, k, a, b)] = "Bt->blk[%d][%d].m[%d][%d]" % (i, k, a, b)
+    for name in ("qg", "qa", "wg", "wa"):
+        ins[name] = "q->" + name
+    return ins
+
+
+def function(n):
+    bias = n == 15
+    probe = Gen()
+    probe.inputs = inputs(bias)
+    kernel(probe, bias)
+    g = Gen(used=probe.used)
+    g.inputs = inputs(bias)
+    kernel(g, bias)
+    body = g.lines
+    text = "\n".join("    " + s for s in body)
+    name = "se23_cov_step%d" % n
+    doc = ("/* %d states: %d multiplies and %d adds (fused into multiply-adds\n"
+           " * where the target has them), %d reads of P, %d stores. */\n"
+           % (n, g.muls, g.adds, len(g.loaded), n * n))
+    sig = ("void %s(const se23_pose_t *U, se23_real_t dt,\n"
+           "%s const se23_input_blocks_t *Bt, const se23_step_noise_t *q,\n"
+           "%s const se23_real_t *P, se23_real_t *out, int stride)\n"
+           % (name, " " * (len(name) + 5), " " * (len(name) + 5)))
+    return doc + sig + "{\n" + text + "\n}\n"
+
+
+def source():
+    parts = []
+    for n in (9, 15):
+        parts.append(function(n))
+    return ("/* Generated by tools/gen/gen_cov_step.py: do not edit; change the\n"
+            " * generator and run it (make check fails while this file is stale).\n"
+            " *\n"
+            " * The per-sample covariance step of cov_step.h, out = Phi P Phi^T +\n"
+            " * diag(B_k N B_k^T, W), as straight-line code: the block algorithm of\n"
+            " * cov_step.c's file comment with every 3x3 product expanded and its\n"
+            " * structural zeros skipped. */\n"
+            "#include \"cov_step.h\"\n\n" + "\n".join(parts))
+
+
+def main():
+    text = source()
+    if "--check" in sys.argv[1:]:
+        try:
+            with open(OUT) as f:
+                current = f.read()
+        except OSError:
+            current = ""
+        if current != text:
+            print("src/cov_step_kernel.c is stale: run python3 tools/gen/gen_cov_step.py",
+                  file=sys.stderr)
+            return 1
+        return 0
+    with open(OUT, "w") as f:
+        f.write(text)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
