@@ -91,6 +91,14 @@ se23_status_t se23_preint_unc_check(const se23_preint_unc_t *fu)
     return se23_cov_check(fu->P.m, 9, 9);
 }
 
+/* Nonzero if every entry of the classical Jacobians is finite. */
+static int classic_finite(const se23_preint_classic_t *cl)
+{
+    return se23_all_finite(&cl->dR_dbg.m[0][0], 9) && se23_all_finite(&cl->dV_dbg.m[0][0], 9) &&
+           se23_all_finite(&cl->dV_dba.m[0][0], 9) && se23_all_finite(&cl->dX_dbg.m[0][0], 9) &&
+           se23_all_finite(&cl->dX_dba.m[0][0], 9);
+}
+
 se23_status_t se23_preint_unc_add(se23_preint_unc_t *fu,
                                   const se23_imu_sample_t *s,
                                   const se23_imu_noise_t *noise)
@@ -130,14 +138,25 @@ se23_status_t se23_preint_unc_add(se23_preint_unc_t *fu,
                             SE23_GAUSS_N_POSE, fu->P.m, 9)) {
         return SE23_ERR_NONFINITE; /* the increment, B_k or P+ would overflow */
     }
+    /* J+, the classical Jacobians and the Deltas can overflow too (a force
+     * near the largest real): computed aside, checked, then stored. */
+    se23_mat9x6_t J = fu->J;
+    se23_preint_classic_t cl = fu->cl;
+    se23_preint_t f = fu->f;
+    se23_cov_jac_step(&U, c.dt, &Bt, &J);
+    if (fu->classic != 0) {
+        se23_preint_classic_step(&cl, &fu->f.delta.R, &U.R, &c.w_ib_b, &c.f_b, c.dt);
+    }
+    se23_preint_add_increment(&f, &U, c.dt);
+    if (!se23_all_finite(J.m, 54) || !classic_finite(&cl) || !se23_pose_finite(&f.delta) ||
+        !se23_is_finite(f.dt)) {
+        return SE23_ERR_NONFINITE;
+    }
     /* Nothing below can fail: update in place. */
     se23_cov_step(&U, c.dt, &Bt, &q, SE23_GAUSS_N_POSE, fu->P.m, fu->P.m, 9);
-    se23_cov_jac_step(&U, c.dt, &Bt, &fu->J);
-    if (fu->classic != 0) {
-        se23_preint_classic_step(&fu->cl, &fu->f.delta.R, &U.R, &c.w_ib_b,
-                                 &c.f_b, c.dt);
-    }
-    se23_preint_add_increment(&fu->f, &U, c.dt);
+    fu->J = J;
+    fu->cl = cl;
+    fu->f = f;
     return SE23_OK;
 }
 
