@@ -89,11 +89,15 @@ $(eval $(call cmake_tree,double,ON))
 $(eval $(call cmake_tree,float,OFF))
 # The unit tests once more with SE23_CFG_DEEP_CHECKS=1 (no Eigen reference).
 $(eval $(call cmake_tree,deep,ON,-DSE23_DEEP_CHECKS=ON -DSE23_BUILD_REFERENCE=OFF))
-# The unit tests of both precisions under AddressSanitizer and
-# UndefinedBehaviorSanitizer (no Eigen reference; every finding aborts).
+# The unit tests and the cross-checks of both precisions under
+# AddressSanitizer and UndefinedBehaviorSanitizer (every finding aborts):
+# the C code instrumented, the Eigen reference reused from the double tree
+# (it depends on neither the precision nor the flags).
 SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
-$(eval $(call cmake_tree,asan-double,ON,-DSE23_BUILD_REFERENCE=OFF -DCMAKE_C_FLAGS="$(SAN_FLAGS)" -DCMAKE_EXE_LINKER_FLAGS="$(SAN_FLAGS)"))
-$(eval $(call cmake_tree,asan-float,OFF,-DSE23_BUILD_REFERENCE=OFF -DCMAKE_C_FLAGS="$(SAN_FLAGS)" -DCMAKE_EXE_LINKER_FLAGS="$(SAN_FLAGS)"))
+SAN_REF := -DSE23_REFERENCE_LIB=$(abspath $(BUILD))/cmake-double/tests/reference/libse23_reference.a
+$(eval $(call cmake_tree,asan-double,ON,$(SAN_REF) -DCMAKE_C_FLAGS="$(SAN_FLAGS)" -DCMAKE_EXE_LINKER_FLAGS="$(SAN_FLAGS)"))
+$(eval $(call cmake_tree,asan-float,OFF,$(SAN_REF) -DCMAKE_C_FLAGS="$(SAN_FLAGS)" -DCMAKE_EXE_LINKER_FLAGS="$(SAN_FLAGS)"))
+tests-asan-double tests-asan-float: tests-double
 
 check: deps
 	@BUILD=$(BUILD) JOBS=$(JOBS) sh tests/check.sh

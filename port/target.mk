@@ -34,12 +34,38 @@ TGT_CORRUPT := se23_so3_exp
 # tests/target/ins_replay_drive.c runs on both sides).
 TGT_INSR_GEN := $(TGT)/gen_ins_replay
 TGT_INSR_OBJS = $(TGT)/$(1)/ins_replay.o $(TGT)/$(1)/ins_replay_drive.o
-$(TGT_INSR_GEN): tools/target/gen_ins_replay.c tests/target/ins_replay_drive.c \
-                 tests/target/ins_replay.h tests/support/se23_rng.c tests/support/se23_rng.h \
+$(TGT_INSR_GEN): tools/target/gen_ins_replay.c \
+                 tools/target/gen_print.c tools/target/gen_print.h \
+                 tests/target/ins_replay_drive.c tests/target/ins_replay.h \
+                 tests/support/se23_rng.c tests/support/se23_rng.h \
                  $(LIB_HDRS) $(BUILD)/lib-host-double/libse23.a
 	mkdir -p $(@D)
 	$(CC) $(WARN) -O2 -Iinclude -Itests/target -Itests/support -DSE23_CFG_DOUBLE=1 \
 	    $(filter %.c,$^) $(BUILD)/lib-host-double/libse23.a -lm -o $@
+
+# The real walk replayed (tests/target/walk_replay.c): the x-io walk
+# (tools/data/xio-gait-tracking) as se23-import reads it, and the host's run
+# of the filter through it in the image's precision, from
+# tools/target/gen_walk_replay (C, built once per precision against the
+# host library of that precision and the importer's parsing code; the
+# drivers tests/target/ins_replay_drive.c and walk_replay_drive.c run on
+# both sides).
+TGT_WALK_CSV := tools/data/xio-gait-tracking/short_walk.csv
+TGT_WALK_OBJS = $(patsubst %,$(TGT)/$(1)/%.o,walk_replay walk_replay_drive ins_replay_drive)
+TGT_WALK_GEN_SRCS := tools/target/gen_walk_replay.c tools/target/gen_print.c \
+                     tests/target/ins_replay_drive.c tests/target/walk_replay_drive.c \
+                     tools/import/csv.c tools/import/row.c tools/import/hygiene.c
+# $(call tgt_walk_gen,float|double,SE23_CFG_DOUBLE)
+define tgt_walk_gen
+$(TGT)/gen_walk_replay_$(1): $(TGT_WALK_GEN_SRCS) tools/target/gen_print.h \
+                             tests/target/ins_replay.h tests/target/walk_replay.h \
+                             $(wildcard tools/import/*.h) $(LIB_HDRS) $(BUILD)/lib-host-$(1)/libse23.a
+	mkdir -p $$(@D)
+	$(CC) $(WARN) -O2 -Iinclude -Itests/target -DSE23_CFG_DOUBLE=$(2) \
+	    $(TGT_WALK_GEN_SRCS) $(BUILD)/lib-host-$(1)/libse23.a -lm -o $$@
+endef
+$(eval $(call tgt_walk_gen,float,0))
+$(eval $(call tgt_walk_gen,double,1))
 
 TGT_VARIANTS := m4f-float m7-double
 TGT_BOARD_m4f-float := mps2-an386
@@ -78,6 +104,16 @@ $(TGT)/$(1)/ins_replay_data_corrupt.c: $(TGT_INSR_GEN) | $(TGT)/$(1)/port
 	$(TGT_INSR_GEN) --corrupt > $$@.tmp 2> $$(@:.c=.log) || { cat $$(@:.c=.log); exit 1; }
 	mv $$@.tmp $$@
 $(TGT)/$(1)/ins_replay_data.o $(TGT)/$(1)/ins_replay_data_corrupt.o: tests/target/ins_replay.h
+$(TGT)/$(1)/walk_replay_data.c: $(TGT)/gen_walk_replay_$(if $(filter 1,$(3)),double,float) \
+                                $(TGT_WALK_CSV) | $(TGT)/$(1)/port
+	$$< $(TGT_WALK_CSV) > $$@.tmp 2> $$(@:.c=.log) || { cat $$(@:.c=.log); exit 1; }
+	mv $$@.tmp $$@
+$(TGT)/$(1)/walk_replay_data_corrupt.c: $(TGT)/gen_walk_replay_$(if $(filter 1,$(3)),double,float) \
+                                        $(TGT_WALK_CSV) | $(TGT)/$(1)/port
+	$$< --corrupt $(TGT_WALK_CSV) > $$@.tmp 2> $$(@:.c=.log) || { cat $$(@:.c=.log); exit 1; }
+	mv $$@.tmp $$@
+$(TGT)/$(1)/walk_replay_data.o $(TGT)/$(1)/walk_replay_data_corrupt.o: tests/target/ins_replay.h \
+                                                                       tests/target/walk_replay.h
 $(TGT)/$(1)/port:
 	mkdir -p $$@
 $(TGT)/$(1)/tv_test.elf: $(call TGT_TV_OBJS,$(1)) $(TGT)/$(1)/tv_data.o $(call TGT_PORT_OBJS,$(1)) \
@@ -97,6 +133,15 @@ $(TGT)/$(1)/ins_replay_corrupt.elf: $(call TGT_INSR_OBJS,$(1)) $(TGT)/$(1)/ins_r
                                     port/cortex-m/sections.ld
 	$(ARM_CC) $(2) $(TGT_LDFLAGS) -u _printf_float -Tport/cortex-m/$(TGT_BOARD_$(1)).ld \
 	    $$(filter %.o %.a,$$^) -lm -o $$@
+$(TGT)/$(1)/walk_replay.elf: $(call TGT_WALK_OBJS,$(1)) $(TGT)/$(1)/walk_replay_data.o \
+                             $(call TGT_PORT_OBJS,$(1)) $(BUILD)/lib-$(1)/libse23.a port/cortex-m/sections.ld
+	$(ARM_CC) $(2) $(TGT_LDFLAGS) -u _printf_float -Tport/cortex-m/$(TGT_BOARD_$(1)).ld \
+	    -Wl,-Map,$$(@:.elf=.map) $$(filter %.o %.a,$$^) -lm -o $$@
+$(TGT)/$(1)/walk_replay_corrupt.elf: $(call TGT_WALK_OBJS,$(1)) $(TGT)/$(1)/walk_replay_data_corrupt.o \
+                                     $(call TGT_PORT_OBJS,$(1)) $(BUILD)/lib-$(1)/libse23.a \
+                                     port/cortex-m/sections.ld
+	$(ARM_CC) $(2) $(TGT_LDFLAGS) -u _printf_float -Tport/cortex-m/$(TGT_BOARD_$(1)).ld \
+	    $$(filter %.o %.a,$$^) -lm -o $$@
 $(TGT)/$(1)/port_selftest.elf: $(TGT)/$(1)/port_selftest.o $(call TGT_PORT_OBJS,$(1)) \
                                port/cortex-m/sections.ld port/cortex-m/$(TGT_BOARD_$(1)).ld
 	$(ARM_CC) $(2) $(TGT_LDFLAGS) -Tport/cortex-m/$(TGT_BOARD_$(1)).ld \
@@ -105,8 +150,9 @@ endef
 $(eval $(call tgt_variant,m4f-float,$(M4F_FLAGS),0))
 $(eval $(call tgt_variant,m7-double,$(M7_FLAGS),1))
 
-TGT_RUN_IMAGES := port_selftest tv_test ins_replay
-TGT_IMAGES := $(foreach v,$(TGT_VARIANTS),$(foreach i,$(TGT_RUN_IMAGES) tv_corrupt ins_replay_corrupt,\
+TGT_RUN_IMAGES := port_selftest tv_test ins_replay walk_replay
+TGT_IMAGES := $(foreach v,$(TGT_VARIANTS),$(foreach i,$(TGT_RUN_IMAGES) tv_corrupt ins_replay_corrupt \
+                walk_replay_corrupt,\
                 $(TGT)/$(v)/$(i).elf))
 
 target: $(TGT_IMAGES)
@@ -142,6 +188,16 @@ test-target-ins-corrupt: target
 	  $(QEMU_RUN) $(TGT_BOARD_$(v)) $(TGT)/$(v)/ins_replay_corrupt.elf; rc=$$?; \
 	  if [ $$rc -eq 3 ]; then echo "$(v): perturbed reference detected (exit 3, as required)"; \
 	  else echo "$(v): perturbed reference gave exit $$rc, expected 3"; fail=1; fi;) exit $$fail
+
+# The walk replay's own test: the image built from a reference with three
+# perturbed values (a position, a counter, one sample's stance flag;
+# gen_walk_replay --corrupt) must report exactly those three checks failed.
+.PHONY: test-target-walk-corrupt
+test-target-walk-corrupt: target
+	@fail=0; $(foreach v,$(TGT_VARIANTS),\
+	  $(QEMU_RUN) $(TGT_BOARD_$(v)) $(TGT)/$(v)/walk_replay_corrupt.elf; rc=$$?; \
+	  if [ $$rc -eq 3 ]; then echo "$(v): perturbed walk reference detected (exit 3, as required)"; \
+	  else echo "$(v): perturbed walk reference gave exit $$rc, expected 3"; fail=1; fi;) exit $$fail
 
 # Fixtures the gates must reject (tests/target/gate_fixtures), compiled like
 # the M4F float library: $(TGT)/gate-fixtures/<name>/<name>.o (+ .su, .ci).

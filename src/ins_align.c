@@ -10,9 +10,10 @@
 /* The statuses of se23_ins_align for a, SE23_OK if it is usable. */
 static se23_status_t align_check(const se23_ins_t *ins, const se23_ins_align_t *a)
 {
-    const se23_real_t reals[] = {a->p_n.v[0], a->p_n.v[1], a->p_n.v[2], a->sigma_p,
-                                 a->yaw,       a->sigma_yaw, a->sigma_v,  a->sigma_bg,
-                                 a->sigma_ba,  a->duration};
+    const se23_real_t reals[] = {a->p_n.v[0],  a->p_n.v[1],  a->p_n.v[2], a->sigma_p,
+                                 a->yaw,        a->sigma_yaw,  a->sigma_v,  a->sigma_bg,
+                                 a->sigma_ba,   a->duration,   a->course_speed,
+                                 a->course_sigma};
     const int bias = ins->cfg.bias_states;
     se23_status_t st = SE23_OK;
     const size_t n_bytes = sizeof reals;
@@ -20,7 +21,12 @@ static se23_status_t align_check(const se23_ins_t *ins, const se23_ins_align_t *
         st = SE23_ERR_NONFINITE;
     } else if ((ins->cfg.zupt == 0) || ((a->gyrocompass != 0) && (ins->cfg.earth_rotation == 0)) ||
                (a->sigma_p <= SE23_R(0)) || (a->sigma_v <= SE23_R(0)) ||
-               ((a->gyrocompass == 0) && (a->sigma_yaw <= SE23_R(0))) ||
+               ((a->gyrocompass == 0) && (a->course_speed <= SE23_R(0)) &&
+                (a->sigma_yaw <= SE23_R(0))) ||
+               (a->course_speed < SE23_R(0)) ||
+               ((a->course_speed > SE23_R(0)) &&
+                ((a->gyrocompass != 0) || !(a->course_sigma > SE23_R(0)) ||
+                 (a->course_sigma > SE23_R(3)))) ||
                ((bias != 0) && ((a->sigma_bg <= SE23_R(0)) || (a->sigma_ba <= SE23_R(0)))) ||
                (a->sigma_ba < SE23_R(0)) || (a->duration < SE23_R(0)) ||
                (a->duration > SE23_INS_MAX_OUTAGE) || (a->sigma_p > SE23_R(1e6)) ||
@@ -193,7 +199,10 @@ se23_ins_verdict_t se23_ins_align_sample(se23_ins_t *ins, int64_t t_ns,
 {
     se23_ins_align_sums_t *a = &ins->sums;
     se23_vec3_t w_mean, f_mean, w_var, f_var;
-    se23_real_t yaw, sigma_yaw = ins->align.sigma_yaw;
+    se23_real_t yaw;
+    /* an unknown heading (GNSS course to come): 1 rad, until the course */
+    se23_real_t sigma_yaw = (ins->align.course_speed > SE23_R(0)) ? SE23_R(1)
+                                                                 : ins->align.sigma_yaw;
     se23_mat3_t R;
     int stationary = 0;
     se23_status_t st = se23_stationary_add(&ins->det, &s->w_ib_b, &s->f_b, &stationary);
@@ -232,5 +241,8 @@ se23_ins_verdict_t se23_ins_align_sample(se23_ins_t *ins, int64_t t_ns,
     }
     se23_ins_start(ins, t_ns, &ins->work);
     ins->last = *s;
+    if (ins->align.course_speed > SE23_R(0)) {
+        ins->status |= SE23_INS_ST_HEADING_UNKNOWN;
+    }
     return SE23_INS_USED;
 }

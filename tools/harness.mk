@@ -6,6 +6,7 @@
 #   make demo        60 s UAV flight, MEMS IMU 200 Hz, Earth rotation, GNSS 5 Hz,
 #                    sim -> LCM -> se23-ins -> LCM -> report + plots
 #   make demo-live   the same over udpm:// in a private network namespace
+#   make soak        10^7 filter steps per precision, aided and unaided (se23-soak)
 #   make demo-walk   a real foot-mounted walk (CSV) through the library's filter:
 #                    loop-closure error, distance, stance phases, plots
 #   make bench-ins   se23-ins throughput on a recorded log of 1.2 M IMU samples
@@ -40,11 +41,11 @@ H_HDRS := $(wildcard tools/lcm/*.h tools/sim/*.h tools/ins/*.h tools/report/*.h 
 H_LIB := $(BUILD)/lib-host-double/libse23.a
 h_objs = $(patsubst %.c,$(H)/obj/%.o,$(1))
 
-.PHONY: harness demo demo-live demo-walk bench-ins
+.PHONY: harness demo demo-live demo-walk bench-ins soak
 
 harness: $(H_BIN)/se23-sim $(H_BIN)/se23-ins $(H_BIN)/se23-report $(H_BIN)/se23-corrupt \
          $(H_BIN)/se23-simcheck $(H_BIN)/se23-walk $(H_BIN)/se23-ins-float \
-         $(H_BIN)/se23-import $(H_BIN)/se23-importcheck
+         $(H_BIN)/se23-import $(H_BIN)/se23-importcheck $(H_BIN)/se23-soak $(H_BIN)/se23-soak-float
 
 $(H_GEN)/.stamp: $(LCM_TYPES)
 	@mkdir -p $(H_GEN)
@@ -65,6 +66,16 @@ $(H)/obj-float/%.o: %.c $(H_HDRS) $(H_GEN)/.stamp
 	$(CC) $(H_CFLAGS) -DSE23_CFG_DOUBLE=0 -c $< -o $@
 $(H_BIN)/se23-ins-float: $(patsubst %.c,$(H)/obj-float/%.o,$(H_INS_SRCS)) $(H)/libse23lcm.a \
                          $(BUILD)/lib-host-float/libse23.a
+	@mkdir -p $(dir $@)
+	$(CC) -o $@ $^ $(LCM_LIBS) -lm
+
+# se23-soak, double and float (tools/soak).
+H_SOAK_SRCS := tools/soak/soak.c $(H_COMMON)
+$(H_BIN)/se23-soak: $(call h_objs,$(H_SOAK_SRCS)) $(H_LIB)
+	@mkdir -p $(dir $@)
+	$(CC) -o $@ $^ $(LCM_LIBS) -lm
+$(H_BIN)/se23-soak-float: $(patsubst %.c,$(H)/obj-float/%.o,$(H_SOAK_SRCS)) \
+                          $(BUILD)/lib-host-float/libse23.a
 	@mkdir -p $(dir $@)
 	$(CC) -o $@ $^ $(LCM_LIBS) -lm
 
@@ -101,6 +112,10 @@ demo:
 	@sh tools/install-deps.sh $(BUILD)
 	@$(MAKE) -s --no-print-directory harness BUILD=$(BUILD)
 	@sh tools/lcm/demo.sh $(H)
+
+soak: harness
+	@for v in se23-soak se23-soak-float; do for a in on off; do \
+	    $(H_BIN)/$$v --steps 10000000 --aided $$a --check-every 1000000 || exit 1; done; done
 
 demo-walk:
 	@sh tools/install-deps.sh $(BUILD)

@@ -104,7 +104,12 @@
  * the first stationary stretch (duration seconds of consecutive stationary
  * detector verdicts, at least one window; motion starts the average again)
  * give roll and pitch (align.h), the gyro bias (its mean reading less the
- * Earth rate, unless gyrocompassing), heading from the caller
+ * Earth rate, unless gyrocompassing), heading from the caller, from the
+ * GNSS course (course_speed > 0: the heading is unknown, 1-sigma 1 rad,
+ * status SE23_INS_ST_HEADING_UNKNOWN, and fixes fuse their position only,
+ * until the first fix whose horizontal velocity exceeds course_speed sets
+ * the heading of body x to its course, with 1-sigma sqrt(course_sigma^2 +
+ * (sigma_v / speed)^2), and the velocity to the fix; course_headings)
  * or, with gyrocompass set, from the Earth rate the gyro senses; the
  * attitude covariance from the window's statistics, v = 0, p and the bias
  * covariances from the caller. Until then samples are counted imu_early.
@@ -167,6 +172,7 @@ extern "C" {
 #define SE23_INS_ST_ALIGNING 0x040U    /**< static alignment in progress */
 #define SE23_INS_ST_STATIONARY 0x080U  /**< the detector's window is stationary */
 #define SE23_INS_ST_GATE_RESET 0x100U  /**< position and velocity were reset to a fix */
+#define SE23_INS_ST_HEADING_UNKNOWN 0x200U /**< aligned, heading awaits the GNSS course */
 
 /** What became of one input (returned by se23_ins_imu and se23_ins_gnss). */
 typedef enum {
@@ -198,6 +204,7 @@ typedef struct {
     uint32_t gnss_delayed; /**< of gnss_used: fused late, by replay */
     uint32_t gnss_pending_dropped, gnss_nonfinite;
     uint32_t gnss_early, gnss_stale, gnss_gated, gate_resets;
+    uint32_t course_headings;  /**< headings set from the GNSS course */
     uint32_t zupt_used, zaru_used;
     uint32_t time_resets, filter_errors, init_rejected;
 } se23_ins_counters_t;
@@ -246,6 +253,10 @@ typedef struct {
     se23_real_t sigma_bg;     /**< initial gyro bias 1-sigma [rad/s] (bias states) */
     se23_real_t sigma_ba;     /**< initial accel bias 1-sigma [m/s^2] (bias states) */
     se23_real_t duration;     /**< rest averaged [s] (0: one detector window) */
+    se23_real_t course_speed; /**< > 0: heading from the GNSS course once the horizontal
+                                   speed exceeds this [m/s] (yaw, sigma_yaw unused) */
+    se23_real_t course_sigma; /**< 1-sigma of the body heading about the course
+                                   (sideslip, crab) [rad] (course_speed > 0) */
 } se23_ins_align_t;
 
 /** Running sums of an alignment: deviations from its first sample (no
@@ -332,6 +343,8 @@ typedef struct {
  * The chi^2_{6W-2} quantile / W of stationary.h for the standard normal
  * quantile z (Wilson-Hilferty): the detector threshold at which a window at
  * rest is called moving with the probability 1 - Phi(z).
+ * @return the threshold; no checks (window >= 1 and a moderate z are the
+ *         caller's: e.g. z = 2.326 for one window in 100).
  */
 se23_real_t se23_ins_detector_threshold(int window, se23_real_t z);
 
@@ -377,17 +390,35 @@ se23_status_t se23_ins_init(se23_ins_t *ins, int64_t t_ns, const se23_gauss_t *g
  * detector has seen a->duration seconds (at least a window) of rest.
  * @return SE23_ERR_NULL; SE23_ERR_DOMAIN (detector off in the
  *         configuration, gyrocompass on flat Earth, a sigma <= 0 or above
- *         1e6, duration < 0 or above SE23_INS_MAX_OUTAGE);
+ *         1e6, duration < 0 or above SE23_INS_MAX_OUTAGE, course_speed < 0,
+ *         a course with gyrocompass or with course_sigma outside (0, 3]);
  *         SE23_ERR_NONFINITE; on error the filter is unchanged but for
  *         init_rejected.
  */
 se23_status_t se23_ins_align(se23_ins_t *ins, const se23_ins_align_t *a);
 
-/** One raw IMU sample (gyro w_b [rad/s], specific force f_b [m/s^2]). */
+/**
+ * One raw IMU sample (gyro w_b [rad/s], specific force f_b [m/s^2]),
+ * screened, then integrated (file comment).
+ * @return SE23_INS_USED; or what became of it: SE23_INS_EARLY,
+ *         SE23_INS_NONFINITE, SE23_INS_RANGE, SE23_INS_DUPLICATE,
+ *         SE23_INS_OUT_OF_ORDER, SE23_INS_BAD_TIME (also t_ns < 0,
+ *         seq < 0), SE23_INS_BAD_DT, SE23_INS_OUTAGE (confirmed a jump or
+ *         a clock step), SE23_INS_FAILED (NULL argument, or a library
+ *         step failed: state kept), each counted.
+ */
 se23_ins_verdict_t se23_ins_imu(se23_ins_t *ins, int64_t t_ns, int64_t seq,
                                 const se23_vec3_t *w_b, const se23_vec3_t *f_b);
 
-/** One GNSS fix (file comment, "GNSS"). */
+/**
+ * One GNSS fix (file comment, "GNSS").
+ * @return SE23_INS_USED (fused now or at its own time), SE23_INS_PENDING
+ *         (ahead of the state: held), SE23_INS_RESET (gate recovery);
+ *         SE23_INS_EARLY, SE23_INS_NONFINITE (NaN/Inf, t_ns < 0, a sigma
+ *         <= 0 or > 1e6), SE23_INS_STALE (beyond the horizon or not after
+ *         the last fused fix), SE23_INS_GATED, SE23_INS_FAILED (NULL
+ *         argument or a failed update: state kept), each counted.
+ */
 se23_ins_verdict_t se23_ins_gnss(se23_ins_t *ins, const se23_ins_gnss_t *fix);
 
 /**
@@ -400,7 +431,10 @@ se23_ins_verdict_t se23_ins_gnss(se23_ins_t *ins, const se23_ins_gnss_t *fix);
  */
 se23_status_t se23_ins_state(const se23_ins_t *ins, se23_gauss_t *out, int64_t *t_ns);
 
-/** Takes the finished preintegrated factor, if any: returns 1, else 0. */
+/**
+ * Takes the finished preintegrated factor, if any.
+ * @return 1 (out written), or 0 (none ready, or a NULL argument).
+ */
 int se23_ins_take_factor(se23_ins_t *ins, se23_ins_factor_t *out);
 
 #ifdef __cplusplus

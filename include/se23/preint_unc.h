@@ -121,6 +121,7 @@ se23_status_t se23_preint_unc_reset(const se23_vec3_t *b_g,
  * classical Jacobians of Forster et al. (file comment), for comparison:
  * about 300 more multiply-adds per sample. Only such a factor can be
  * corrected with se23_preint_unc_correct_classic.
+ * @return as se23_preint_unc_reset.
  */
 se23_status_t se23_preint_unc_reset_classic(const se23_vec3_t *b_g,
                                             const se23_vec3_t *b_a,

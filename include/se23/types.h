@@ -109,7 +109,10 @@ typedef enum {
     SE23_ERR_DIM = 8          /**< a dimension argument is out of range */
 } se23_status_t;
 
-/** Short constant name of a status, e.g. "SE23_ERR_DT"; never NULL. */
+/**
+ * Short constant name of a status, e.g. "SE23_ERR_DT".
+ * @return never NULL ("SE23_ERR_UNKNOWN" for a value that is not a status).
+ */
 const char *se23_status_str(se23_status_t status);
 
 #ifdef __cplusplus

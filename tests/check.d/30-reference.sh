@@ -21,6 +21,17 @@ for ref_prec in double float; do
         check "ref-$ref_prec-$ref_name-perturbed" env SE23_XC_PERTURB=$ref_perturb "$ref_bin"
     done
 done
+# The same cross-checks with the C library built with AddressSanitizer and
+# UndefinedBehaviorSanitizer (-fno-sanitize-recover=all: a finding aborts),
+# both precisions (the trees of 20-unit.sh).
+for ref_prec in double float; do
+    check "ref-asan-$ref_prec-built" test -x "$BUILD/cmake-asan-$ref_prec/tests/reference/crosscheck_nav"
+    for ref_bin in "$BUILD/cmake-asan-$ref_prec/tests/reference"/crosscheck_*; do
+        [ -x "$ref_bin" ] || continue
+        ref_name=$(basename "$ref_bin")
+        check "ref-asan-$ref_prec-$ref_name" "$ref_bin" "$LOGDIR/asan-$ref_prec-$ref_name.md"
+    done
+done
 {
     echo "| routine | build | error | samples | worst | worst/eps | bound | over bound |"
     echo "|---|---|---|---:|---:|---:|---:|---:|"

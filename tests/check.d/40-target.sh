@@ -2,26 +2,32 @@
 # on qemu-system-arm (port/target.mk): the port self-test, the reference
 # vectors of every public routine (tests/target), the navigation filter run
 # through recorded sequences against the host's double run
-# (tests/target/ins_replay.c), and the runners' own tests (one corrupted
-# vector must fail exactly one check; three perturbed replay references,
-# exactly three checks). The POSIX port runs the
-# same self-test on the host; the template port must compile.
+# (tests/target/ins_replay.c), the real foot-mounted walk against the
+# host's run in the image's precision (tests/target/walk_replay.c), and the
+# runners' own tests (one corrupted vector must fail exactly one check;
+# three perturbed replay references, and three perturbed walk references,
+# exactly three checks each). The POSIX port runs the same self-test on the
+# host; the template port must compile.
 check port-posix make -s test-port-posix BUILD="$BUILD"
 check port-template cc -std=c99 -Wall -Wextra -Wpedantic -Werror -Iport \
     -fsyntax-only port/template/se23_port.c
 # Every public function of include/se23/*.h has reference vectors (a row of
 # tests/target/tv_list.h and a generator in tools/target/gen_*.cpp).
+# The README's contract table is the one the headers' @return paragraphs give.
+check readme-contract-current /usr/bin/python3 tools/target/se23_api.py --contract-check \
+    README.md
 check target-vectors-cover-api /usr/bin/python3 tools/target/se23_api.py --coverage \
     tests/target/tv_list.h
 check target-images make -s -j1 target BUILD="$BUILD"
 for v in m4f-float:mps2-an386 m7-double:mps2-an500; do
-    for img in port_selftest tv_test ins_replay; do
+    for img in port_selftest tv_test ins_replay walk_replay; do
         check "target-${v%%:*}-$img" sh tools/target/qemu-run.sh "${v#*:}" \
             "$BUILD/target/${v%%:*}/$img.elf"
     done
 done
 check target-corrupt-vector-fails make -s test-target-corrupt BUILD="$BUILD"
 check target-ins-replay-corrupt-fails make -s test-target-ins-corrupt BUILD="$BUILD"
+check target-walk-replay-corrupt-fails make -s test-target-walk-corrupt BUILD="$BUILD"
 # Instruction counts (make bench-target): every operation returns SE23_OK and
 # two runs give identical counts.
 check target-bench-deterministic sh -c 'make -s bench-target BUILD="$1" >/dev/null &&

@@ -71,15 +71,6 @@ static const double tol[N_GROUPS] = {
 #endif
 static const int rel[N_GROUPS] = {0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
 
-static const char *const counter_name[INSR_N_COUNTERS] = {
-    "imu_used", "imu_early", "imu_align", "imu_nonfinite", "imu_range", "imu_duplicate",
-    "imu_out_of_order", "imu_bad_time", "imu_bad_dt", "imu_missing", "imu_seq_jumps",
-    "gnss_used", "gnss_delayed", "gnss_pending_dropped", "gnss_nonfinite", "gnss_early",
-    "gnss_stale", "gnss_gated", "gate_resets", "zupt_used", "zaru_used", "time_resets",
-    "filter_errors", "init_rejected"};
-
-typedef char counters_are_uint32[(sizeof(se23_ins_counters_t) ==
-                                  INSR_N_COUNTERS * sizeof(uint32_t)) ? 1 : -1];
 
 static se23_ins_t ins;                 /* large: static */
 static insr_check_t got[16];
@@ -128,7 +119,7 @@ static int check(const insr_seq_t *s, const insr_check_t *o, const insr_check_t 
     for (i = 0; i < INSR_N_COUNTERS; ++i) {
         if (o->c[i] != ref->c[i]) {
             printf("FAIL %s sample %d: counter %s = %u, expected %u\n", s->name, ref->at,
-                   counter_name[i], (unsigned)o->c[i], (unsigned)ref->c[i]);
+                   insr_counter_name[i], (unsigned)o->c[i], (unsigned)ref->c[i]);
             ++fails;
         }
     }
@@ -176,31 +167,17 @@ static int check(const insr_seq_t *s, const insr_check_t *o, const insr_check_t 
 #define PRESET_TOL 1e-6
 #endif
 
-static double rel_dev(se23_real_t got, se23_real_t ref)
-{
-    const double d = (double)got - (double)ref;
-    const double a = d < 0.0 ? -d : d;
-    const double r = (double)ref < 0.0 ? -(double)ref : (double)ref;
-    if (!(a == a)) {
-        return 1e30;
-    }
-    return r > 0.0 ? a / r : (a > 0.0 ? 1e30 : 0.0);
-}
-
 /* se23_ins_preset_foot and se23_ins_detector_threshold against the host;
  * returns the number of failed calls. */
 static int check_presets(void)
 {
     static se23_ins_config_t cfg; /* static: kept off the stack */
     se23_ins_align_t al;
-    se23_real_t r[INSR_FLAT_REALS], rr[INSR_FLAT_REALS];
-    int iv[INSR_FLAT_INTS], ir[INSR_FLAT_INTS];
     double worst = 0.0;
-    int fails = 0, k, i;
+    int fails = 0, same = 1, k;
     for (k = 0; k < insr_n_presets; ++k) {
         const insr_preset_t *p = &insr_presets[k];
-        int bad = 0;
-        int st;
+        int bad, st;
         memset(&cfg, 0, sizeof cfg);
         memset(&al, 0, sizeof al);
         st = (int)se23_ins_preset_foot(p->rate_hz, p->lat, &cfg, &al);
@@ -213,20 +190,7 @@ static int check_presets(void)
         if (st != SE23_OK) {
             continue;
         }
-        insr_flatten(&cfg, &al, r, iv);
-        insr_flatten(&p->cfg, &p->align, rr, ir);
-        for (i = 0; i < INSR_FLAT_INTS; ++i) {
-            bad += iv[i] != ir[i];
-        }
-        for (i = 0; i < INSR_FLAT_REALS; ++i) {
-            const double d = rel_dev(r[i], rr[i]);
-            worst = d > worst ? d : worst;
-            if (!(d <= PRESET_TOL)) {
-                printf("FAIL se23_ins_preset_foot(%g, %g): real %d = %.9g, expected %.17g\n",
-                       (double)p->rate_hz, (double)p->lat, i, (double)r[i], (double)rr[i]);
-                ++bad;
-            }
-        }
+        bad = insr_config_diff(&cfg, &al, &p->cfg, &p->align, PRESET_TOL, &worst, &same);
         if (bad != 0) {
             printf("FAIL se23_ins_preset_foot(%g, %g): %d field(s) differ\n",
                    (double)p->rate_hz, (double)p->lat, bad);
@@ -236,7 +200,7 @@ static int check_presets(void)
     for (k = 0; k < insr_n_thresholds; ++k) {
         const insr_threshold_t *t = &insr_thresholds[k];
         const se23_real_t thr = se23_ins_detector_threshold(t->window, t->z);
-        const double d = rel_dev(thr, t->threshold);
+        const double d = insr_rel_dev(thr, t->threshold);
         worst = d > worst ? d : worst;
         if (!(d <= PRESET_TOL)) {
             printf("FAIL se23_ins_detector_threshold(%d, %g) = %.9g, expected %.17g\n",
@@ -253,7 +217,6 @@ static int check_presets(void)
 int main(void)
 {
     int fails = 0, s, j;
-    (void)sizeof(counters_are_uint32);
     printf("se23 navigation filter replay, %s build, against the host's double run\n",
            SE23_CFG_DOUBLE ? "double" : "float");
     for (s = 0; s < insr_n_seqs; ++s) {

@@ -40,7 +40,7 @@ typedef struct {
 } insr_factor_t;
 
 /** Number of counters (se23_ins_counters_t is uint32_t fields only). */
-#define INSR_N_COUNTERS 24
+#define INSR_N_COUNTERS 25
 /** Index of counter `field` of se23_ins_counters_t in insr_check_t.c. */
 #define INSR_CIDX(field) ((int)(offsetof(se23_ins_counters_t, field) / sizeof(uint32_t)))
 
@@ -100,13 +100,27 @@ extern const insr_threshold_t insr_thresholds[];
 extern const int insr_n_thresholds;
 
 /** Reals and integers of a configuration with its alignment request. */
-#define INSR_FLAT_REALS 35
+#define INSR_FLAT_REALS 37
 #define INSR_FLAT_INTS 6
 
 /** r, iv = every real and every integer field of c and a, in a fixed
  *  order (for field-by-field comparisons). */
 void insr_flatten(const se23_ins_config_t *c, const se23_ins_align_t *a,
                   se23_real_t r[INSR_FLAT_REALS], int iv[INSR_FLAT_INTS]);
+
+/** The names of se23_ins_counters_t's fields, in field order. */
+extern const char *const insr_counter_name[INSR_N_COUNTERS];
+
+/** |got - ref| / |ref| in double (0 for two zeros, 1e30 for NaN or a
+ *  nonzero against zero). */
+double insr_rel_dev(se23_real_t got, se23_real_t ref);
+
+/** The fields of (c, a) that differ from (c_ref, a_ref): integers exactly,
+ *  reals beyond tol relative (insr_rel_dev); *worst takes the largest real
+ *  deviation, *same is cleared if a real differs at all. */
+int insr_config_diff(const se23_ins_config_t *c, const se23_ins_align_t *a,
+                     const se23_ins_config_t *c_ref, const se23_ins_align_t *a_ref,
+                     double tol, double *worst, int *same);
 
 /** Called by insr_drive after every input: what 0 after IMU sample k (its
  *  verdict), 1 after a fix delivered at k (its verdict). */
@@ -123,5 +137,22 @@ typedef void (*insr_hook_t)(void *ctx, const se23_ins_t *ins, int k, int what, i
  */
 int insr_drive(const insr_seq_t *s, se23_ins_t *ins, insr_check_t *got, insr_hook_t hook,
                void *ctx);
+
+/** The quantile of the filter's mean-acceleration test at rest (src/ins.c,
+ *  ACCEL_TEST_Q: chi^2_3 at 0.999). */
+#define INSR_ACCEL_TEST_Q 16.27
+
+/**
+ * The filter's second rest test (src/ins.c, accel_nis) recomputed in double
+ * from its public state, for the generators (they check that it reproduces
+ * every rest flag the filter set and measure how far each decision lies
+ * from its threshold) and the walk image (its deviation from the host's):
+ * a = R^T (fbar_n + g_n), fbar_n the mean of the detector's window (the
+ * corrected readings in the nav frame), against
+ * C = sigma_a^2 / W I + M P M^T, M = [-f^, I] on (phi, db_a), f the
+ * corrected sample f_raw + b_a; R, P, b_a those before the sample's step
+ * (x), the window that after it (ins->det). Returns a^T C^-1 a.
+ */
+double insr_accel_nis(const se23_ins_t *ins, const se23_gauss_t *x, const se23_real_t f_raw[3]);
 
 #endif /* SE23_INS_REPLAY_H */

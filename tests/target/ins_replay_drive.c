@@ -1,7 +1,8 @@
 /*
  * Drives the navigation filter through one recorded sequence (ins_replay.h):
- * the same code on the target (ins_replay.c) and on the host
- * (tools/target/gen_ins_replay.c, which writes the reference).
+ * the same code on the target (ins_replay.c, walk_replay.c) and on the host
+ * (tools/target/gen_ins_replay.c, gen_walk_replay.c, which write the
+ * references); and the copy of the filter's mean-acceleration rest test.
  */
 #include <string.h>
 
@@ -153,9 +154,114 @@ void insr_flatten(const se23_ins_config_t *c, const se23_ins_align_t *a,
         c->gnss_gate, c->delay_horizon, c->preint_window, c->detector.sigma_a,
         c->detector.sigma_g, c->detector.gravity, c->detector.threshold, c->zupt_sigma_v,
         c->zaru_sigma_w, c->zaru_after, a->p_n.v[0], a->p_n.v[1], a->p_n.v[2], a->sigma_p,
-        a->yaw, a->sigma_yaw, a->sigma_v, a->sigma_bg, a->sigma_ba, a->duration};
+        a->yaw, a->sigma_yaw, a->sigma_v, a->sigma_bg, a->sigma_ba, a->duration,
+        a->course_speed, a->course_sigma};
     const int ints[INSR_FLAT_INTS] = {c->earth_rotation, c->bias_states, c->gate_recover,
                                       c->zupt, c->detector.window, a->gyrocompass};
     memcpy(r, reals, sizeof reals);
     memcpy(iv, ints, sizeof ints);
+}
+
+const char *const insr_counter_name[INSR_N_COUNTERS] = {
+    "imu_used",       "imu_early",   "imu_align",   "imu_nonfinite",  "imu_range",
+    "imu_duplicate",  "imu_out_of_order", "imu_bad_time", "imu_bad_dt", "imu_missing",
+    "imu_seq_jumps",  "gnss_used",   "gnss_delayed", "gnss_pending_dropped",
+    "gnss_nonfinite", "gnss_early",  "gnss_stale",  "gnss_gated",     "gate_resets",
+    "course_headings", "zupt_used",  "zaru_used",   "time_resets",    "filter_errors",
+    "init_rejected"};
+
+/* se23_ins_counters_t must be exactly the INSR_N_COUNTERS uint32_t named above. */
+typedef char insr_counters_are_uint32[(sizeof(se23_ins_counters_t) ==
+                                       INSR_N_COUNTERS * sizeof(uint32_t)) ? 1 : -1];
+
+double insr_rel_dev(se23_real_t got, se23_real_t ref)
+{
+    const double d = (double)got - (double)ref;
+    const double a = d < 0.0 ? -d : d;
+    const double r = (double)ref < 0.0 ? -(double)ref : (double)ref;
+    if (!(a == a)) {
+        return 1e30;
+    }
+    return r > 0.0 ? a / r : (a > 0.0 ? 1e30 : 0.0);
+}
+
+int insr_config_diff(const se23_ins_config_t *c, const se23_ins_align_t *a,
+                     const se23_ins_config_t *c_ref, const se23_ins_align_t *a_ref,
+                     double tol, double *worst, int *same)
+{
+    se23_real_t r[INSR_FLAT_REALS], rr[INSR_FLAT_REALS];
+    int iv[INSR_FLAT_INTS], ir[INSR_FLAT_INTS];
+    int bad = 0, i;
+    insr_flatten(c, a, r, iv);
+    insr_flatten(c_ref, a_ref, rr, ir);
+    for (i = 0; i < INSR_FLAT_INTS; ++i) {
+        bad += iv[i] != ir[i];
+    }
+    for (i = 0; i < INSR_FLAT_REALS; ++i) {
+        const double d = insr_rel_dev(r[i], rr[i]);
+        *same &= r[i] == rr[i];
+        *worst = d > *worst ? d : *worst;
+        bad += !(d <= tol);
+    }
+    return bad;
+}
+
+double insr_accel_nis(const se23_ins_t *ins, const se23_gauss_t *x, const se23_real_t f_raw[3])
+{
+    const se23_stationary_t *d = &ins->det;
+    const int W = d->cfg.window;
+    double R[3][3], f[3], a_n[3] = {0.0, 0.0, 0.0}, a[3], F[3][3], C[3][3], y[3];
+    double det, nis = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            R[i][j] = x->T.R.m[i][j];
+        }
+        f[i] = f_raw[i] + x->b_a.v[i];
+        for (int k = 0; k < W; ++k) {
+            a_n[i] += d->f[k].v[i] / W;
+        }
+        a_n[i] += ins->model.g_n.v[i];
+    }
+    for (int i = 0; i < 3; ++i) {
+        a[i] = R[0][i] * a_n[0] + R[1][i] * a_n[1] + R[2][i] * a_n[2];
+    }
+    memset(F, 0, sizeof F);
+    F[0][1] = -f[2];
+    F[0][2] = f[1];
+    F[1][0] = f[2];
+    F[1][2] = -f[0];
+    F[2][0] = -f[1];
+    F[2][1] = f[0];
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            double c = (i == j) ? (double)d->cfg.sigma_a * d->cfg.sigma_a / W : 0.0;
+            for (int k = 0; k < 3; ++k) {
+                for (int l = 0; l < 3; ++l) {
+                    c += F[i][k] * x->P.m[SE23_GAUSS_NMAX * k + l] * F[j][l];
+                }
+                if (x->n == SE23_GAUSS_N_BIAS) {
+                    c -= F[i][k] * x->P.m[SE23_GAUSS_NMAX * k + SE23_IDX_BA + j];
+                    c -= F[j][k] * x->P.m[SE23_GAUSS_NMAX * k + SE23_IDX_BA + i];
+                }
+            }
+            if (x->n == SE23_GAUSS_N_BIAS) {
+                c += x->P.m[SE23_GAUSS_NMAX * (SE23_IDX_BA + i) + SE23_IDX_BA + j];
+            }
+            C[i][j] = c;
+        }
+    }
+    /* y = C^-1 a by the adjugate */
+    det = C[0][0] * (C[1][1] * C[2][2] - C[1][2] * C[2][1]) -
+          C[0][1] * (C[1][0] * C[2][2] - C[1][2] * C[2][0]) +
+          C[0][2] * (C[1][0] * C[2][1] - C[1][1] * C[2][0]);
+    for (int i = 0; i < 3; ++i) {
+        const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+        y[i] = 0.0;
+        for (int j = 0; j < 3; ++j) {
+            const int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+            y[i] += (C[j1][i1] * C[j2][i2] - C[j1][i2] * C[j2][i1]) * a[j]; /* adj(C)[i][j] */
+        }
+        nis += a[i] * y[i] / det;
+    }
+    return nis;
 }

@@ -216,6 +216,72 @@ static void test_gyrocompass_on_rotating_earth(void **state)
     assert_true(sqrt((double)out.P.m[SE23_GAUSS_NMAX * 2 + 2]) < 0.01);
 }
 
+/* Heading from the GNSS course: aligned level at rest with the heading
+ * unknown, then accelerating along body x on a true heading of 1.1 rad;
+ * the first fix faster than course_speed sets the heading, and the filter
+ * then tracks the truth with fixes that pass the gate. */
+static void test_heading_from_gnss_course(void **state)
+{
+    (void)state;
+    const double psi = 1.1, a_x = 1.0, g = it_gravity();
+    se23_ins_config_t c;
+    se23_ins_align_t a;
+    se23_gauss_t out;
+    int64_t t;
+    int k, fixes = 0;
+    it_config(&c, 1);
+    assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
+    align_request(&a);
+    a.yaw = SE23_R(0); /* unused: the course decides */
+    a.course_speed = SE23_R(2);
+    a.course_sigma = (se23_real_t)0.02;
+    assert_int_equal(se23_ins_align(&ins, &a), SE23_OK);
+    for (k = 1; k <= 8 * 200; ++k) {
+        const double tk = k / IT_RATE, tm = tk - 2.0; /* moving after 2 s at rest */
+        se23_vec3_t w = {{0, 0, 0}}, f = {{0, 0, (se23_real_t)-g}};
+        if (tm > 0) {
+            f.v[0] = (se23_real_t)a_x; /* level, accelerating along body x */
+        }
+        (void)se23_ins_imu(&ins, k * IT_DT_NS, k, &w, &f);
+        if (tm > 0.5 && k % 40 == 0) { /* truth: v = a t (cos psi, sin psi, 0) */
+            const double v = a_x * tm, s = 0.5 * a_x * tm * tm;
+            const double p[3] = {s * cos(psi), s * sin(psi), 0.0};
+            se23_ins_gnss_t fix;
+            it_fix(k * IT_DT_NS, p, 0.05, &fix);
+            fix.has_vel = 1;
+            fix.v_n.v[0] = (se23_real_t)(v * cos(psi));
+            fix.v_n.v[1] = (se23_real_t)(v * sin(psi));
+            for (int i = 0; i < 3; ++i) {
+                fix.sigma_v.v[i] = (se23_real_t)0.05;
+            }
+            const se23_ins_verdict_t vd = se23_ins_gnss(&ins, &fix);
+            if (v < 2.0) {
+                assert_true((ins.status & SE23_INS_ST_HEADING_UNKNOWN) != 0);
+            } else {
+                assert_int_equal(vd, SE23_INS_USED);
+                assert_int_equal(ins.status & SE23_INS_ST_HEADING_UNKNOWN, 0);
+                fixes++;
+            }
+        }
+    }
+    assert_int_equal(ins.c.course_headings, 1);
+    assert_true(fixes > 10);
+    assert_int_equal(ins.c.gnss_gated, 0);
+    assert_int_equal(se23_ins_state(&ins, &out, &t), SE23_OK);
+    assert_int_equal(se23_gauss_check(&out), SE23_OK);
+    {
+        const double yaw = atan2((double)out.T.R.m[1][0], (double)out.T.R.m[0][0]);
+        const double s_yaw = sqrt((double)out.P.m[SE23_GAUSS_NMAX * 2 + 2]);
+        print_message("course heading: yaw %.4f (truth %.4f), sigma %.4f\n", yaw, psi, s_yaw);
+        assert_true(fabs(yaw - psi) < 3 * s_yaw + 1e-3);
+        assert_true(s_yaw < 0.03);
+    }
+    /* the request's checks */
+    align_request(&a);
+    a.course_speed = SE23_R(2);
+    assert_int_equal(se23_ins_align(&ins, &a), SE23_ERR_DOMAIN); /* no course_sigma */
+}
+
 static void test_align_rejects_what_it_cannot_use(void **state)
 {
     (void)state;
@@ -262,6 +328,7 @@ int main(void)
         cmocka_unit_test(test_alignment_tilt_matches_its_covariance),
         cmocka_unit_test(test_alignment_models_the_bias_tilt),
         cmocka_unit_test(test_gyrocompass_on_rotating_earth),
+        cmocka_unit_test(test_heading_from_gnss_course),
         cmocka_unit_test(test_align_rejects_what_it_cannot_use),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

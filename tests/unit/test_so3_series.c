@@ -87,6 +87,9 @@ static double reference_eps(void)
     return (double)e;
 }
 
+/* Worst |got - expected| / (eps * scale) per coefficient over the run. */
+static double worst_ulps[7];
+
 static void check_at(se23_real_t theta)
 {
     static double ref_eps = 0;
@@ -109,6 +112,10 @@ static void check_at(se23_real_t theta)
          * accurate near a zero. */
         double scale = fabs((double)e[i]) > 0.05 ? fabs((double)e[i]) : 0.05;
         double tol = 16 * (SE23T_EPS + ref_eps) * scale;
+        double ulps = fabs((double)got[i] - (double)e[i]) / ((SE23T_EPS + ref_eps) * scale);
+        if (ulps > worst_ulps[i]) {
+            worst_ulps[i] = ulps;
+        }
         if (!se23t_near(got[i], (double)e[i], tol, 0)) {
             print_error("coefficient %d at theta = %.9g\n", i, (double)theta);
         }
@@ -129,6 +136,28 @@ static void test_so3_series_coeffs_match_closed_forms(void **state)
     se23t_rng_seed(&rng, 21);
     for (int n = 0; n < 2000; ++n) {
         check_at((se23_real_t)se23t_uniform(&rng, 0, 6.2));
+    }
+    /* At the accuracy the code reaches, not only the 16 eps requirement:
+     * the worst errors measured over these angles (c1, c2, c3, c4, k1, k2,
+     * jl_inv; double 0.99 / 1.76 / 1.90 / 11.2 / 2.85 / 8.58 / 2.07 eps,
+     * float 1.25 / 1.56 / 1.47 / 1.72 / 2.50 / 1.74 / 1.76 eps), bounded
+     * at about 1.5 times that. A dropped series term (e.g. the ninth Horner
+     * term of c1: 15.3 eps near theta = 1) fails here. */
+    if (SE23_CFG_DOUBLE && (reference_eps() > 1e-17)) {
+        /* long double computed in double (valgrind): the reference cannot
+         * resolve these bounds; the native runs (sanitizer trees) check them */
+        print_message("reference without extended precision: tight bounds not checked\n");
+        return;
+    }
+#if SE23_CFG_DOUBLE
+    const double reached[7] = {1.5, 2.7, 2.9, 16.0, 4.3, 12.9, 3.1};
+#else
+    const double reached[7] = {1.9, 2.4, 2.2, 2.6, 3.8, 2.6, 2.7};
+#endif
+    for (int i = 0; i < 7; ++i) {
+        print_message("coefficient %d: worst %.2f eps (bound %.1f)\n", i, worst_ulps[i],
+                      reached[i]);
+        assert_true(worst_ulps[i] <= reached[i]);
     }
 }
 

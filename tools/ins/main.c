@@ -477,6 +477,7 @@ static void summary(const node_t *nd, int64_t skipped, double cpu_s)
         {"gnss_gated", c->gnss_gated},
         {"gnss_pending_dropped", c->gnss_pending_dropped},
         {"gate_resets", c->gate_resets},
+        {"course_headings", c->course_headings},
         {"zupt_used", c->zupt_used},
         {"zaru_used", c->zaru_used},
         {"time_resets", c->time_resets},

@@ -27,8 +27,8 @@
  * The generator refuses to write a reference (exit 1) unless the run keeps
  * away from every decision a rounding could flip: at rest, both of the
  * filter's rest tests (SHOE on the corrected readings, and the window's
- * mean acceleration against its covariance, recomputed here from the
- * filter's state and checked against every flag it set) at most half
+ * mean acceleration against its covariance, recomputed from the filter's
+ * state by insr_accel_nis and checked against every flag it set) at most half
  * their thresholds; in motion, one of them at least twice its threshold;
  * every fix fused with a NIS (position + velocity, so each part too) below
  * half the gate. Its margins and the filter's error against the truth go to
@@ -42,6 +42,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "gen_print.h"
 #include "ins_replay.h"
 #include "se23/earth.h"
 #include "se23/so3.h"
@@ -344,78 +345,6 @@ static int fixes(gen_seq_t *g)
     return n;
 }
 
-/* The quantile of the filter's mean-acceleration test at rest (src/ins.c,
- * ACCEL_TEST_Q: chi^2_3 at 0.999). */
-#define ACCEL_TEST_Q 16.27
-
-/*
- * The filter's second rest test (src/ins.c, accel_nis), recomputed in
- * double from its public state: a = R^T (fbar_n + g_n), fbar_n the mean of
- * the detector's window (the corrected readings in the nav frame), against
- * C = sigma_a^2 / W I + M P M^T, M = [-f^, I] on (phi, db_a), f the
- * corrected sample; R, P, b_a those before the sample's step (x). The
- * generator checks that this copy reproduces every flag the filter set.
- */
-static double accel_nis(const se23_ins_t *ins, const se23_gauss_t *x, const insr_imu_t *m)
-{
-    const se23_stationary_t *d = &ins->det;
-    const int W = d->cfg.window;
-    double R[3][3], f[3], a_n[3] = {0.0, 0.0, 0.0}, a[3], F[3][3], C[3][3], y[3];
-    double det, nis = 0.0;
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-            R[i][j] = x->T.R.m[i][j];
-        }
-        f[i] = m->f[i] + x->b_a.v[i];
-        for (int k = 0; k < W; ++k) {
-            a_n[i] += d->f[k].v[i] / W;
-        }
-        a_n[i] += ins->model.g_n.v[i];
-    }
-    for (int i = 0; i < 3; ++i) {
-        a[i] = R[0][i] * a_n[0] + R[1][i] * a_n[1] + R[2][i] * a_n[2];
-    }
-    memset(F, 0, sizeof F);
-    F[0][1] = -f[2];
-    F[0][2] = f[1];
-    F[1][0] = f[2];
-    F[1][2] = -f[0];
-    F[2][0] = -f[1];
-    F[2][1] = f[0];
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-            double c = (i == j) ? (double)d->cfg.sigma_a * d->cfg.sigma_a / W : 0.0;
-            for (int k = 0; k < 3; ++k) {
-                for (int l = 0; l < 3; ++l) {
-                    c += F[i][k] * x->P.m[SE23_GAUSS_NMAX * k + l] * F[j][l];
-                }
-                if (x->n == SE23_GAUSS_N_BIAS) {
-                    c -= F[i][k] * x->P.m[SE23_GAUSS_NMAX * k + SE23_IDX_BA + j];
-                    c -= F[j][k] * x->P.m[SE23_GAUSS_NMAX * k + SE23_IDX_BA + i];
-                }
-            }
-            if (x->n == SE23_GAUSS_N_BIAS) {
-                c += x->P.m[SE23_GAUSS_NMAX * (SE23_IDX_BA + i) + SE23_IDX_BA + j];
-            }
-            C[i][j] = c;
-        }
-    }
-    /* y = C^-1 a by the adjugate */
-    det = C[0][0] * (C[1][1] * C[2][2] - C[1][2] * C[2][1]) -
-          C[0][1] * (C[1][0] * C[2][2] - C[1][2] * C[2][0]) +
-          C[0][2] * (C[1][0] * C[2][1] - C[1][1] * C[2][0]);
-    for (int i = 0; i < 3; ++i) {
-        const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
-        y[i] = 0.0;
-        for (int j = 0; j < 3; ++j) {
-            const int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-            y[i] += (C[j1][i1] * C[j2][i2] - C[j1][i2] * C[j2][i1]) * a[j]; /* adj(C)[i][j] */
-        }
-        nis += a[i] * y[i] / det;
-    }
-    return nis;
-}
-
 static void hook(void *ctx, const se23_ins_t *ins, int k, int what, int verdict)
 {
     gen_seq_t *g = ctx;
@@ -443,11 +372,11 @@ static void hook(void *ctx, const se23_ins_t *ins, int k, int what, int verdict)
         }
         /* a live sample with a full window: both rest tests decided */
         if (verdict == SE23_INS_USED && full) {
-            const double n = accel_nis(ins, &g->prev, &g->imu[k]) / ACCEL_TEST_Q;
+            const double n = insr_accel_nis(ins, &g->prev, g->imu[k].f) / INSR_ACCEL_TEST_Q;
             const int flag = (ins->status & SE23_INS_ST_STATIONARY) != 0U;
             if (flag != (ins->det.stationary && n < 1.0)) {
                 fprintf(stderr, "%s: sample %d: the filter's rest flag %d, the generator's "
-                        "copy of its tests %d (update accel_nis)\n", g->name, k, flag,
+                        "copy of its tests %d (update insr_accel_nis)\n", g->name, k, flag,
                         !flag);
                 g->bad++;
             }
@@ -558,99 +487,6 @@ static int build(gen_seq_t *g)
 
 /* ---- output ------------------------------------------------------------- */
 
-static void reals(const char *name, const se23_real_t *x, int n)
-{
-    printf(" .%s = {", name);
-    for (int i = 0; i < n; ++i) {
-        printf("%s%.17g", i ? ", " : "", (double)x[i]);
-    }
-    printf("},");
-}
-
-static void vec(const char *name, const se23_vec3_t *x)
-{
-    printf(" .%s = {.v = {%.17g, %.17g, %.17g}},", name, x->v[0], x->v[1], x->v[2]);
-}
-
-static void print_config(const se23_ins_config_t *c)
-{
-    const se23_imu_noise_t *n = &c->noise;
-    const se23_stationary_config_t *d = &c->detector;
-    printf("  .cfg = {\n");
-    printf("   .noise = {%.17g, %.17g, %.17g, %.17g},\n", n->gyro_noise, n->accel_noise,
-           n->gyro_walk, n->accel_walk);
-    printf("   .gyro_range = %.17g, .accel_range = %.17g, .lat = %.17g,\n", c->gyro_range,
-           c->accel_range, c->lat);
-    printf("   .earth_rotation = %d, .bias_states = %d, .dt_nominal = %.17g, .max_gap = %.17g,\n",
-           c->earth_rotation, c->bias_states, c->dt_nominal, c->max_gap);
-    printf("   .max_outage = %.17g, .outage_accel = %.17g, .outage_rate = %.17g,\n  ",
-           c->max_outage, c->outage_accel, c->outage_rate);
-    vec("lever_b", &c->lever_b);
-    printf("\n   .gnss_gate = %.17g, .gate_recover = %d, .delay_horizon = %.17g,\n", c->gnss_gate,
-           c->gate_recover, c->delay_horizon);
-    printf("   .preint_window = %.17g, .zupt = %d,\n", c->preint_window, c->zupt);
-    printf("   .detector = {%d, %.17g, %.17g, %.17g, %.17g},\n", d->window, d->sigma_a,
-           d->sigma_g, d->gravity, d->threshold);
-    printf("   .zupt_sigma_v = %.17g, .zaru_sigma_w = %.17g, .zaru_after = %.17g},\n",
-           c->zupt_sigma_v, c->zaru_sigma_w, c->zaru_after);
-}
-
-static void print_align(const se23_ins_align_t *a)
-{
-    printf("{");
-    vec("p_n", &a->p_n);
-    printf(" .sigma_p = %.17g, .yaw = %.17g, .sigma_yaw = %.17g, .gyrocompass = %d,\n"
-           "         .sigma_v = %.17g, .sigma_bg = %.17g, .sigma_ba = %.17g, .duration = %.17g},\n",
-           a->sigma_p, a->yaw, a->sigma_yaw, a->gyrocompass, a->sigma_v, a->sigma_bg,
-           a->sigma_ba, a->duration);
-}
-
-static void print_start(const insr_start_t *s)
-{
-    printf("  .start = {.align = %d,\n   .a = ", s->align);
-    print_align(&s->a);
-    printf("   .t0_ns = %lldLL,\n  ", (long long)s->t0_ns);
-    reals("phi", s->phi, 3);
-    reals("v", s->v, 3);
-    reals("p", s->p, 3);
-    reals("bg", s->bg, 3);
-    reals("ba", s->ba, 3);
-    printf("\n  ");
-    reals("P", s->P, 15);
-    printf("},\n");
-}
-
-static void print_check(const insr_check_t *o)
-{
-    const insr_factor_t *f = &o->fac;
-    printf(" {.at = %d, .t_ns = %lldLL, .status = 0x%03xU,\n  .c = {", o->at, (long long)o->t_ns,
-           (unsigned)o->status);
-    for (int i = 0; i < INSR_N_COUNTERS; ++i) {
-        printf("%s%uU", i ? ", " : "", (unsigned)o->c[i]);
-    }
-    printf("},\n  .factors = %d,\n  .fac = {.t0_ns = %lldLL, .t1_ns = %lldLL, .seq0 = %lldLL, "
-           ".n = %uU,\n  ",
-           o->factors, (long long)f->t0_ns, (long long)f->t1_ns, (long long)f->seq0,
-           (unsigned)f->n);
-    reals("dR", f->dR, 9);
-    printf("\n  ");
-    reals("dV", f->dV, 3);
-    reals("dX", f->dX, 3);
-    printf(" .dt = %.17g,\n  ", (double)f->dt);
-    reals("P", f->P, 9);
-    printf("},\n  ");
-    reals("R", o->R, 9);
-    printf("\n  ");
-    reals("v", o->v, 3);
-    reals("p", o->p, 3);
-    printf("\n  ");
-    reals("bg", o->bg, 3);
-    reals("ba", o->ba, 3);
-    printf("\n  ");
-    reals("P", o->P, 15);
-    printf("},\n");
-}
-
 static void print_seq(int s, const gen_seq_t *g)
 {
     printf("\n/* %s: %d IMU samples, %d fixes, %d checkpoints */\n", g->name, g->seq.n_imu,
@@ -672,7 +508,7 @@ static void print_seq(int s, const gen_seq_t *g)
     }
     printf("};\nstatic const insr_check_t check%d[%d] = {\n", s, g->seq.n_check);
     for (int j = 0; j < g->seq.n_check; ++j) {
-        print_check(&g->got[j]);
+        gen_print_check(&g->got[j]);
     }
     printf("};\n");
 }
@@ -701,9 +537,9 @@ static void print_presets(int corrupt)
         memset(&a, 0, sizeof a);
         st = se23_ins_preset_foot(rate, lat, &c, &a);
         printf(" {%.17g, %.17g, %d,\n", rate, lat, (int)st);
-        print_config(&c);
+        gen_print_config(&c);
         printf("  .align = ");
-        print_align(&a);
+        gen_print_align(&a);
         printf(" },\n");
     }
     printf("};\nconst int insr_n_presets = %d;\n", n);
@@ -753,8 +589,8 @@ int main(int argc, char **argv)
     printf("\nconst insr_seq_t insr_seqs[] = {\n");
     for (int s = 0; s < n; ++s) {
         printf(" {\"%s\",\n", seqs[s].name);
-        print_config(&seqs[s].seq.cfg);
-        print_start(&seqs[s].seq.start);
+        gen_print_config(&seqs[s].seq.cfg);
+        gen_print_start(&seqs[s].seq.start);
         printf("  imu%d, %d, fix%d, %d, check%d, %d},\n", s, seqs[s].seq.n_imu, s,
                seqs[s].seq.n_fix, s, seqs[s].seq.n_check);
     }

@@ -1,0 +1,97 @@
+/* The reference tables of the replay generators as C; see gen_print.h. */
+#include "gen_print.h"
+
+#include <stdio.h>
+
+void gen_reals(const char *name, const se23_real_t *x, int n)
+{
+    printf(" .%s = {", name);
+    for (int i = 0; i < n; ++i) {
+        printf("%s%.17g", i ? ", " : "", (double)x[i]);
+    }
+    printf("},");
+}
+
+void gen_vec(const char *name, const se23_vec3_t *x)
+{
+    printf(" .%s = {.v = {%.17g, %.17g, %.17g}},", name, x->v[0], x->v[1], x->v[2]);
+}
+
+void gen_print_config(const se23_ins_config_t *c)
+{
+    const se23_imu_noise_t *n = &c->noise;
+    const se23_stationary_config_t *d = &c->detector;
+    printf("  .cfg = {\n");
+    printf("   .noise = {%.17g, %.17g, %.17g, %.17g},\n", n->gyro_noise, n->accel_noise,
+           n->gyro_walk, n->accel_walk);
+    printf("   .gyro_range = %.17g, .accel_range = %.17g, .lat = %.17g,\n", c->gyro_range,
+           c->accel_range, c->lat);
+    printf("   .earth_rotation = %d, .bias_states = %d, .dt_nominal = %.17g, .max_gap = %.17g,\n",
+           c->earth_rotation, c->bias_states, c->dt_nominal, c->max_gap);
+    printf("   .max_outage = %.17g, .outage_accel = %.17g, .outage_rate = %.17g,\n  ",
+           c->max_outage, c->outage_accel, c->outage_rate);
+    gen_vec("lever_b", &c->lever_b);
+    printf("\n   .gnss_gate = %.17g, .gate_recover = %d, .delay_horizon = %.17g,\n", c->gnss_gate,
+           c->gate_recover, c->delay_horizon);
+    printf("   .preint_window = %.17g, .zupt = %d,\n", c->preint_window, c->zupt);
+    printf("   .detector = {%d, %.17g, %.17g, %.17g, %.17g},\n", d->window, d->sigma_a,
+           d->sigma_g, d->gravity, d->threshold);
+    printf("   .zupt_sigma_v = %.17g, .zaru_sigma_w = %.17g, .zaru_after = %.17g},\n",
+           c->zupt_sigma_v, c->zaru_sigma_w, c->zaru_after);
+}
+
+void gen_print_align(const se23_ins_align_t *a)
+{
+    printf("{");
+    gen_vec("p_n", &a->p_n);
+    printf(" .sigma_p = %.17g, .yaw = %.17g, .sigma_yaw = %.17g, .gyrocompass = %d,\n"
+           "         .sigma_v = %.17g, .sigma_bg = %.17g, .sigma_ba = %.17g, .duration = %.17g},\n",
+           a->sigma_p, a->yaw, a->sigma_yaw, a->gyrocompass, a->sigma_v, a->sigma_bg,
+           a->sigma_ba, a->duration);
+}
+
+void gen_print_start(const insr_start_t *s)
+{
+    printf("  .start = {.align = %d,\n   .a = ", s->align);
+    gen_print_align(&s->a);
+    printf("   .t0_ns = %lldLL,\n  ", (long long)s->t0_ns);
+    gen_reals("phi", s->phi, 3);
+    gen_reals("v", s->v, 3);
+    gen_reals("p", s->p, 3);
+    gen_reals("bg", s->bg, 3);
+    gen_reals("ba", s->ba, 3);
+    printf("\n  ");
+    gen_reals("P", s->P, 15);
+    printf("},\n");
+}
+
+void gen_print_check(const insr_check_t *o)
+{
+    const insr_factor_t *f = &o->fac;
+    printf(" {.at = %d, .t_ns = %lldLL, .status = 0x%03xU,\n  .c = {", o->at, (long long)o->t_ns,
+           (unsigned)o->status);
+    for (int i = 0; i < INSR_N_COUNTERS; ++i) {
+        printf("%s%uU", i ? ", " : "", (unsigned)o->c[i]);
+    }
+    printf("},\n  .factors = %d,\n  .fac = {.t0_ns = %lldLL, .t1_ns = %lldLL, .seq0 = %lldLL, "
+           ".n = %uU,\n  ",
+           o->factors, (long long)f->t0_ns, (long long)f->t1_ns, (long long)f->seq0,
+           (unsigned)f->n);
+    gen_reals("dR", f->dR, 9);
+    printf("\n  ");
+    gen_reals("dV", f->dV, 3);
+    gen_reals("dX", f->dX, 3);
+    printf(" .dt = %.17g,\n  ", (double)f->dt);
+    gen_reals("P", f->P, 9);
+    printf("},\n  ");
+    gen_reals("R", o->R, 9);
+    printf("\n  ");
+    gen_reals("v", o->v, 3);
+    gen_reals("p", o->p, 3);
+    printf("\n  ");
+    gen_reals("bg", o->bg, 3);
+    gen_reals("ba", o->ba, 3);
+    printf("\n  ");
+    gen_reals("P", o->P, 15);
+    printf("},\n");
+}
