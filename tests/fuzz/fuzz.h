@@ -537,9 +537,12 @@ static inline int fz_gauss_same(const se23_gauss_t *a, const se23_gauss_t *b)
  * within a few eps of |Phi| |P| |Phi|^T), while se23_gauss_check judges
  * the result relative to the result's own largest variance. When a step
  * cancels a variance far below the inputs' (a float update with a 1-sigma
- * of 1000 m/s measured to 0.01 m/s, README "Fuzzing"), the result can have
- * negative variances that se23_gauss_check refuses: a contract violation
- * (SE23_OK, P not PSD) left open, reported, not fixed here.
+ * of 1000 m/s measured to 0.01 m/s, README "Fuzzing"), when exact
+ * measurements (R = 0) pin a state through a nearly singular S, or when an
+ * input accepted within its own tolerance (an R PSD within 1e-5 of its
+ * largest variance) is indefinite at the scale of the others, the result
+ * can have negative variances that se23_gauss_check refuses: a contract
+ * violation (SE23_OK, P not PSD) left open, reported, not fixed here.
  *
  * So that fuzzing goes on past it, fz_check_cov_step counts such a result
  * as known (and does not abort) when P + shift I is positive semidefinite,

@@ -101,8 +101,9 @@ static int meas_of(fz_t *f, const se23_pose_t *T, const se23_vec3_t *b_g, se23_m
 /* The bound of the known finding (fuzz.h) for the update of g with y:
  *  - rounding (src/kalman_parts.c): P+ is the exact Schur complement of a
  *    matrix within g (M_ii M_jj)^1/2 of M = [[S, C^T], [C, P]],
- *    g = (m + 1) eps / (1 - (m + 1) eps), so its eigenvalues are above
- *    -g (n + m) max_i M_ii (here 4 times that);
+ *    g = (m + 1) eps / (1 - (m + 1) eps): a perturbation of at most
+ *    e = g (n + m) max_i M_ii, which reaches P+ directly and through
+ *    S^-1 and C (K dS K^T, K dC^T): (1 + |K|)^2 e (here 4 times that);
  *  - the inputs' own tolerance: P and R are accepted when PSD within
  *    SE23_CFG_COV_TOL of their largest variance, and P+ = (I - K H) P
  *    (I - K H)^T + K R K^T carries a defect dP, dR of that size as
@@ -154,8 +155,13 @@ static double update_bound(const se23_gauss_t *g, const se23_meas_t *y)
                     piv = r;
                 }
             }
-            if (!(fabsl(A[piv][q]) > 0.0L)) {
-                return HUGE_VAL;
+            /* S singular, or nearly, in the working precision (exact
+             * measurements, R = 0, whose rows are dependent): its computed
+             * entries are all rounding, yet may pass the pivot rule
+             * (16 eps of the computed diagonal, itself cancelled); no
+             * accuracy is left to bound */
+            if (!(fabsl(A[piv][q]) > 64.0L * FZ_EPS * (long double)mx)) {
+                return DBL_MAX;
             }
             for (j = 0; j < m + n; ++j) {
                 const long double t = A[q][j];
@@ -187,7 +193,10 @@ static double update_bound(const se23_gauss_t *g, const se23_meas_t *y)
             a2 += x * x;
         }
     }
-    return 4.0 * gam * (n + m) * mx +
+    /* the rounding dM passes through S^-1 as well: K dS K^T, |K|^2 |dS|
+     * (src/kalman_parts.c states only the first term, which does not hold
+     * for a nearly singular S: R = 0 and rows that pin a state jointly) */
+    return 4.0 * gam * (n + m) * mx * (double)(1.0L + 2.0L * sqrtl(k2) + k2) +
            (double)(SE23_CFG_COV_TOL * (a2 * sp * n + k2 * sr * m));
 }
 
