@@ -631,19 +631,13 @@ static inline int fz_check_cov_result(se23_status_t c, const se23_real_t *P, int
             return 0;
         }
     }
-    if (c == SE23_ERR_NOT_PSD) { /* how far from PSD: the shift it needs */
-        long double lo = 0.0L, hi = 1.0L;
-        int k;
+    if (c == SE23_ERR_NOT_PSD) { /* how far from PSD: the shift it needs, to a factor 2 */
+        long double hi = 1.0L;
         while (!fz_psd_shifted(P, n, stride, hi) && hi < 1e300L) {
-            hi *= 16.0L;
+            hi *= 2.0L;
         }
-        for (k = 0; k < 60; ++k) {
-            const long double mid = 0.5L * (lo + hi);
-            if (fz_psd_shifted(P, n, stride, mid)) {
-                hi = mid;
-            } else {
-                lo = mid;
-            }
+        while (hi > 1e-4900L && fz_psd_shifted(P, n, stride, 0.5L * hi)) {
+            hi *= 0.5L;
         }
         fprintf(fz_err_stream != NULL ? fz_err_stream : stderr,
                 "fuzz: %s: P needs a shift of %Lg to be PSD (largest variance %g)\n", what, hi,
