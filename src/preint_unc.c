@@ -3,6 +3,8 @@
  * gauss.h (one implementation for the filter and the factor). */
 #include "se23/preint_unc.h"
 
+#include <float.h>
+
 #include "argcheck.h"
 #include "cov.h"
 #include "cov_step.h"
@@ -91,6 +93,64 @@ se23_status_t se23_preint_unc_check(const se23_preint_unc_t *fu)
     return se23_cov_check(fu->P.m, 9, 9);
 }
 
+#if SE23_CFG_DOUBLE
+#define STEP_MAX (SE23_R(DBL_MAX) / SE23_R(64))
+#else
+#define STEP_MAX (SE23_R(FLT_MAX) / SE23_R(64))
+#endif
+
+static se23_real_t max2(se23_real_t a, se23_real_t b)
+{
+    return (a > b) ? a : b;
+}
+
+/* The largest |x_i| of n reals. */
+static se23_real_t max_abs(const se23_real_t *x, int n)
+{
+    se23_real_t m = SE23_R(0);
+    for (int i = 0; i < n; ++i) {
+        const se23_real_t a = se23_fabs(x[i]);
+        m = (a > m) ? a : m;
+    }
+    return m;
+}
+
+/*
+ * Nonzero if J+, the classical Jacobians and the Deltas of one step stay
+ * below STEP_MAX (partial results included), for the increment U, the
+ * corrected force f, dt and b (se23_input_blocks_bound): an O(n) bound
+ * decides before anything is stored, as se23_cov_step_fits does for P+.
+ * Rows of rotations sum to at most sqrt 3 < 2, |Jr| <= 1 (taken as 2),
+ * u >= |U.v|_1 + |U.p|_1, f1 = |f|_1, entries of the factor at most mJ, mc,
+ * md (J, classical, Deltas):
+ *   J+ = D (G J + Bt):         2 ((1 + dt + u) mJ + b)
+ *   classical (preint_classic.c; Delta R f^ at most 2 f1, times dR/dbg
+ *   at most 6 f1 mc): (mc + 1)(2 + dt + 6 f1 (1 + dt)) + 2 dt
+ *   Deltas (Phi_dt(Delta) U):  md (1 + dt) + 2 u
+ * (dt <= SE23_CFG_DT_MAX = 1). NaN fails.
+ */
+static int rest_fits(const se23_preint_unc_t *fu, const se23_pose_t *U,
+                     const se23_vec3_t *f, se23_real_t dt, se23_real_t b)
+{
+    const se23_real_t u = max_abs(U->v.v, 3) * SE23_R(3) + max_abs(U->p.v, 3) * SE23_R(3);
+    const se23_real_t f1 = se23_fabs(f->v[0]) + se23_fabs(f->v[1]) + se23_fabs(f->v[2]);
+    const se23_real_t mJ = max_abs(fu->J.m, 54);
+    const se23_real_t md = max2(max_abs(fu->f.delta.v.v, 3), max_abs(fu->f.delta.p.v, 3));
+    se23_real_t mc = SE23_R(0);
+    if (fu->classic != 0) {
+        const se23_preint_classic_t *c = &fu->cl;
+        mc = max2(max2(max_abs(&c->dR_dbg.m[0][0], 9), max_abs(&c->dV_dbg.m[0][0], 9)),
+                        max2(max2(max_abs(&c->dV_dba.m[0][0], 9),
+                                              max_abs(&c->dX_dbg.m[0][0], 9)),
+                                   max_abs(&c->dX_dba.m[0][0], 9)));
+    }
+    const se23_real_t jb = SE23_R(2) * (((SE23_R(1) + dt + u) * mJ) + b);
+    const se23_real_t cb = ((mc + SE23_R(1)) * (SE23_R(2) + dt + (SE23_R(6) * f1 * (SE23_R(1) + dt)))) +
+                           (SE23_R(2) * dt);
+    const se23_real_t db = (md * (SE23_R(1) + dt)) + (SE23_R(2) * u);
+    return (jb <= STEP_MAX) && (cb <= STEP_MAX) && (db <= STEP_MAX);
+}
+
 se23_status_t se23_preint_unc_add(se23_preint_unc_t *fu,
                                   const se23_imu_sample_t *s,
                                   const se23_imu_noise_t *noise)
@@ -129,6 +189,11 @@ se23_status_t se23_preint_unc_add(se23_preint_unc_t *fu,
         !se23_cov_step_fits(&U, c.dt, se23_input_blocks_bound(&c.f_b, c.dt), &q,
                             SE23_GAUSS_N_POSE, fu->P.m, 9)) {
         return SE23_ERR_NONFINITE; /* the increment, B_k or P+ would overflow */
+    }
+    /* J+, the classical Jacobians and the Deltas can overflow too (a force
+     * near the largest real without noise, P = 0, passes the bound on P+). */
+    if (!rest_fits(fu, &U, &c.f_b, c.dt, se23_input_blocks_bound(&c.f_b, c.dt))) {
+        return SE23_ERR_NONFINITE;
     }
     /* Nothing below can fail: update in place. */
     se23_cov_step(&U, c.dt, &Bt, &q, SE23_GAUSS_N_POSE, fu->P.m, fu->P.m, 9);

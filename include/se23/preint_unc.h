@@ -139,8 +139,10 @@ se23_status_t se23_preint_unc_reset_classic(const se23_vec3_t *b_g,
  * are checked; the factor is trusted (it comes from reset and add), and
  * re-checked with se23_preint_unc_check only if SE23_CFG_DEEP_CHECKS.
  * @param noise white-noise densities of the IMU (gauss.h)
- * @return SE23_ERR_NONFINITE (s, noise, or an increment or P+ that would
- *         overflow: a huge density, a denormal dt), SE23_ERR_DT (s->dt
+ * @return SE23_ERR_NONFINITE (s, noise, or an increment, P+, J+, the
+ *         classical Jacobians or the Deltas that would overflow: a huge
+ *         density, a denormal dt, a force near the largest real),
+ *         SE23_ERR_DT (s->dt
  *         outside (0, SE23_CFG_DT_MAX]), SE23_ERR_DOMAIN (negative density); with
  *         SE23_CFG_DEEP_CHECKS also the statuses of se23_preint_unc_check;
  *         fu is unchanged on error.

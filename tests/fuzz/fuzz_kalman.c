@@ -98,27 +98,106 @@ static int meas_of(fz_t *f, const se23_pose_t *T, const se23_vec3_t *b_g, se23_m
     return st == SE23_OK;
 }
 
-/* The rounding bound of src/kalman_parts.c for the update of g with y:
- * P+ is the exact Schur complement of a matrix within g (M_ii M_jj)^1/2 of
- * M = [[S, C^T], [C, P]], g = (m + 1) eps / (1 - (m + 1) eps), so its
- * eigenvalues are above -g (n + m) max_i M_ii (here 4 times that), plus
- * the input's own tolerance (fuzz.h, "the one known open finding"). */
+/* The bound of the known finding (fuzz.h) for the update of g with y:
+ *  - rounding (src/kalman_parts.c): P+ is the exact Schur complement of a
+ *    matrix within g (M_ii M_jj)^1/2 of M = [[S, C^T], [C, P]],
+ *    g = (m + 1) eps / (1 - (m + 1) eps): a perturbation of at most
+ *    e = g (n + m) max_i M_ii, which reaches P+ directly and through
+ *    S^-1 and C (K dS K^T, K dC^T): (1 + |K|)^2 e (here 4 times that);
+ *  - the inputs' own tolerance: P and R are accepted when PSD within
+ *    SE23_CFG_COV_TOL of their largest variance, and P+ = (I - K H) P
+ *    (I - K H)^T + K R K^T carries a defect dP, dR of that size as
+ *    (I - K H) dP (I - K H)^T + K dR K^T: |I - K H|_F^2 tol s_P n +
+ *    |K|_F^2 tol s_R m (K = C S^-1 in long double; S from R's upper
+ *    triangle, as the update reads it). */
 static double update_bound(const se23_gauss_t *g, const se23_meas_t *y)
 {
     const int n = g->n, m = y->m;
-    double mx = fz_max_diag(g->P.m, n, 15);
     const double gam = (m + 1) * FZ_EPS / (1.0 - (m + 1) * FZ_EPS);
-    int r, i, j;
-    for (r = 0; r < m; ++r) {
-        long double sr = (long double)y->R[9 * r + r];
-        for (i = 0; i < n; ++i) {
+    const double sp = fz_max_diag(g->P.m, n, 15), sr = fz_max_diag(y->R, m, 9);
+    long double C[15][9], S[9][9], K[15][9], k2 = 0.0L, a2 = 0.0L;
+    double mx = sp;
+    int r, q, i, j;
+    for (i = 0; i < n; ++i) { /* C = P H^T */
+        for (r = 0; r < m; ++r) {
+            long double c = 0.0L;
             for (j = 0; j < n; ++j) {
-                sr += (long double)y->H[15 * r + i] * g->P.m[15 * i + j] * y->H[15 * r + j];
+                c += (long double)g->P.m[15 * i + j] * y->H[15 * r + j];
+            }
+            C[i][r] = c;
+        }
+    }
+    for (r = 0; r < m; ++r) { /* S = H C + R (upper triangle of R) */
+        for (q = 0; q < m; ++q) {
+            long double x = (long double)y->R[r <= q ? 9 * r + q : 9 * q + r];
+            for (j = 0; j < n; ++j) {
+                x += (long double)y->H[15 * r + j] * C[j][q];
+            }
+            S[r][q] = x;
+        }
+        mx = fmax(mx, fabs((double)S[r][r]));
+    }
+    /* K = C S^-1: Gauss-Jordan on [S | C^T] (K^T = S^-1 C^T, S symmetric) */
+    {
+        long double A[9][9 + 15];
+        for (r = 0; r < m; ++r) {
+            for (q = 0; q < m; ++q) {
+                A[r][q] = S[r][q];
+            }
+            for (i = 0; i < n; ++i) {
+                A[r][m + i] = C[i][r];
             }
         }
-        mx = fmax(mx, fabs((double)sr));
+        for (q = 0; q < m; ++q) {
+            int piv = q;
+            for (r = q + 1; r < m; ++r) {
+                if (fabsl(A[r][q]) > fabsl(A[piv][q])) {
+                    piv = r;
+                }
+            }
+            /* S singular, or nearly, in the working precision (exact
+             * measurements, R = 0, whose rows are dependent): its computed
+             * entries are all rounding, yet may pass the pivot rule
+             * (16 eps of the computed diagonal, itself cancelled); no
+             * accuracy is left to bound */
+            if (!(fabsl(A[piv][q]) > 64.0L * FZ_EPS * (long double)mx)) {
+                return DBL_MAX;
+            }
+            for (j = 0; j < m + n; ++j) {
+                const long double t = A[q][j];
+                A[q][j] = A[piv][j];
+                A[piv][j] = t;
+            }
+            for (r = 0; r < m; ++r) {
+                if (r != q) {
+                    const long double f = A[r][q] / A[q][q];
+                    for (j = 0; j < m + n; ++j) {
+                        A[r][j] -= f * A[q][j];
+                    }
+                }
+            }
+        }
+        for (i = 0; i < n; ++i) {
+            for (r = 0; r < m; ++r) {
+                K[i][r] = A[r][m + i] / A[r][r];
+                k2 += K[i][r] * K[i][r];
+            }
+        }
     }
-    return 4.0 * gam * (n + m) * mx + SE23_CFG_COV_TOL * fz_max_diag(g->P.m, n, 15);
+    for (i = 0; i < n; ++i) { /* |I - K H|_F^2 */
+        for (j = 0; j < n; ++j) {
+            long double x = (i == j) ? 1.0L : 0.0L;
+            for (r = 0; r < m; ++r) {
+                x -= K[i][r] * y->H[15 * r + j];
+            }
+            a2 += x * x;
+        }
+    }
+    /* the rounding dM passes through S^-1 as well: K dS K^T, |K|^2 |dS|
+     * (src/kalman_parts.c states only the first term, which does not hold
+     * for a nearly singular S: R = 0 and rows that pin a state jointly) */
+    return 4.0 * gam * (n + m) * mx * (double)(1.0L + 2.0L * sqrtl(k2) + k2) +
+           (double)(SE23_CFG_COV_TOL * (a2 * sp * n + k2 * sr * m));
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);

@@ -125,6 +125,24 @@ static void test_cov_check_near_the_largest_real(void **state)
     }
 }
 
+/* Regression (make fuzz, fuzz_preint_unc, float): a covariance step from
+ * P = 0 with denormal noise gave entries below the smallest normal float,
+ * one diagonal -2.8e-45; the zero matrix's shift (the smallest normal)
+ * then fell below the pivot rule's minimum and the result, zero to
+ * rounding, was refused. */
+static void test_cov_check_denormal_noise_around_zero(void **state)
+{
+    (void)state;
+    se23_real_t A[S * S] = {0};
+    A[0] = (se23_real_t)8e-42;
+    A[2] = A[2 * S] = (se23_real_t)-7.3e-42;
+    A[2 * S + 2] = (se23_real_t)6.7e-42;
+    A[S + 1] = (se23_real_t)-2.8e-45;
+    assert_int_equal(se23_cov_check(A, 3, S), SE23_OK);
+    A[S + 1] = (se23_real_t)-1e-30; /* a normal negative variance is still refused */
+    assert_int_equal(se23_cov_check(A, 3, S), SE23_ERR_NOT_PSD);
+}
+
 static void test_cov_chol_packed_factors(void **state)
 {
     (void)state;
@@ -206,6 +224,7 @@ int main(void)
         cmocka_unit_test(test_cov_check_symmetry_tolerance_both_ways),
         cmocka_unit_test(test_cov_check_psd_tolerance_both_ways),
         cmocka_unit_test(test_cov_check_near_the_largest_real),
+        cmocka_unit_test(test_cov_check_denormal_noise_around_zero),
         cmocka_unit_test(test_cov_chol_packed_factors),
         cmocka_unit_test(test_cov_chol_packed_pivot_rules_both_ways),
         cmocka_unit_test(test_cov_check_work_matches_check),

@@ -580,6 +580,27 @@ static void test_preint_unc_add_refuses_overflow_untouched(void **state)
 #endif
     assert_int_equal(se23_preint_unc_add(&fu, &h, &NOISE), SE23_ERR_NONFINITE);
     assert_factor_same(&fu, &saved);
+    /* Regression (make fuzz, fuzz_preint_unc): without noise (P = 0, so
+     * the bound on P+ is 0) a force near the largest real overflowed the
+     * classical Jacobians (Delta R f^ dR/dbg) with SE23_OK. The float
+     * case reproduces it with gcc as with clang; in double gcc's rounding
+     * already refuses the increment, clang's did not. */
+    static const se23_imu_noise_t none = {0, 0, 0, 0};
+    const se23_vec3_t b0 = {{0, 0, 0}};
+    const se23_real_t M = (se23_real_t)SE23T_REAL_MAX;
+    memset(&fu, 0, sizeof fu);
+    assert_int_equal(se23_preint_unc_reset_classic(&b0, &b0, SE23_INPUT_JAC_EXACT, &fu), SE23_OK);
+#if SE23_CFG_DOUBLE
+    const se23_imu_sample_t s2 = {{{0, 1, 1e12}}, {{M, 1, 1e12}}, 0.005};
+#else
+    const se23_imu_sample_t s1 = {{{7.292115e-05f, 0, -49.1953125f}}, {{1, 1, 7.292115e-05f}},
+                                  0.44033f};
+    const se23_imu_sample_t s2 = {{{7.292115e-05f, 7.292115e-05f, 0}}, {{M, 0, 0}}, 1e-5f};
+    assert_int_equal(se23_preint_unc_add(&fu, &s1, &none), SE23_OK);
+#endif
+    saved = fu;
+    assert_int_equal(se23_preint_unc_add(&fu, &s2, &none), SE23_ERR_NONFINITE);
+    assert_factor_same(&fu, &saved);
 }
 
 /* A valid factor with one defect planted by `plant`; add, correct,
