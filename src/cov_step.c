@@ -31,11 +31,14 @@
 
 enum { PHI = 0, NU = 1, RHO = 2, GYR = 0, ACC = 1 };
 
-/* Entries of P+ below this cannot overflow in the kernel's sums. */
+/* Entries of P+ below this cannot overflow in the kernel's sums;
+ * SE23_INPUT_F_FAST: about the square root of the largest real. */
 #if SE23_CFG_DOUBLE
 #define SE23_COV_STEP_MAX (SE23_R(DBL_MAX) / SE23_R(64))
+#define SE23_INPUT_F_FAST SE23_R(1e154)
 #else
 #define SE23_COV_STEP_MAX (SE23_R(FLT_MAX) / SE23_R(64))
+#define SE23_INPUT_F_FAST SE23_R(1e19)
 #endif
 
 /* A = the 3x3 block of P at rows r0.., columns c0.. */
@@ -111,8 +114,14 @@ static void blk_store_sym(se23_real_t *P, int stride, int r0,
     c[2] = A->m[2][2];
 }
 
-int se23_input_blocks_finite(const se23_input_blocks_t *Bt)
+int se23_input_blocks_finite(const se23_input_blocks_t *Bt, const se23_increment_parts_t *q,
+                             const se23_vec3_t *f, se23_real_t dt)
 {
+    const se23_real_t th1 = se23_fabs(q->th.v[0]) + se23_fabs(q->th.v[1]) + se23_fabs(q->th.v[2]);
+    const se23_real_t f1 = se23_fabs(f->v[0]) + se23_fabs(f->v[1]) + se23_fabs(f->v[2]);
+    if (th1 <= SE23_R(8) && dt <= SE23_R(8) && f1 <= SE23_INPUT_F_FAST) {
+        return 1; /* header: nothing can overflow (NaN fails the tests) */
+    }
     for (int i = PHI; i <= RHO; ++i) {
         for (int k = GYR; k <= ACC; ++k) {
             if (se23_all_finite(&Bt->blk[i][k].m[0][0], 9) == 0) {
@@ -188,11 +197,15 @@ void se23_cov_step(const se23_pose_t *U, se23_real_t dt,
                    const se23_input_blocks_t *Bt, const se23_step_noise_t *q,
                    int n, const se23_real_t *P, se23_real_t *out, int stride)
 {
+    se23_cov_pose_t S;
     if (n == SE23_GAUSS_N_BIAS) {
-        se23_cov_step15(U, dt, Bt, q, P, out, stride);
+        se23_cov_cross_t Y, Zq;
+        se23_cov_step15_bias(U, dt, Bt, q, P, out, stride, &Y, &Zq);
+        se23_cov_step15_pre(U, dt, Bt, &Y, &Zq, P, stride, &S);
     } else {
-        se23_cov_step9(U, dt, Bt, q, P, out, stride);
+        se23_cov_step9_pre(U, dt, Bt, q, P, stride, &S);
     }
+    se23_cov_rotate_pose(U, &S, out, stride);
 }
 
 /* Block (a, b) of a symmetric P from its upper triangle. */
@@ -249,28 +262,6 @@ void se23_cov_nu_shear(const se23_vec3_t *a, int n, const se23_real_t *P,
             blk_store_sym(out, stride, 3 * NU, &Rj[NU]);
         } else {
             blk_store_pair(out, stride, 3 * NU, 3 * j, &Rj[j]);
-        }
-    }
-}
-
-void se23_cov_jac_step(const se23_pose_t *U, se23_real_t dt,
-                       const se23_input_blocks_t *Bt, se23_mat9x6_t *J)
-{
-    for (int k = GYR; k <= ACC; ++k) {
-        se23_mat3_t J0, J1, J2, out;
-        blk_load(J->m, 6, 0, 3 * k, &J0);
-        blk_load(J->m, 6, 3, 3 * k, &J1);
-        blk_load(J->m, 6, 6, 3 * k, &J2);
-        /* G J + Bt, bottom row first (it reads J1 and J0 before they change). */
-        se23_m3_axpy(&J2, dt, &J1, &J2);
-        se23_m3_acc_skew_mul(&J2, SE23_R(-1), &U->p, &J0);
-        se23_m3_acc_skew_mul(&J1, SE23_R(-1), &U->v, &J0);
-        const se23_mat3_t *rows[3] = {&J0, &J1, &J2};
-        for (int i = PHI; i <= RHO; ++i) {
-            se23_mat3_t t;
-            se23_m3_axpy(rows[i], SE23_R(1), &Bt->blk[i][k], &t);
-            se23_m3_mul_tn(&U->R, &t, &out);
-            blk_store(J->m, 6, 3 * i, 3 * k, &out);
         }
     }
 }

@@ -145,20 +145,34 @@ static void series_deriv(se23_real_t a1, se23_real_t a2, se23_real_t b1,
     D->m[2][2] = t2 * af2 + w2 * t2 + d;
 }
 
+/* A = 0, written out (a zero struct copied in costs a memset and a memcpy
+ * call per block on Cortex-M). */
+static void zero_block(se23_mat3_t *A)
+{
+    A->m[0][0] = SE23_R(0);
+    A->m[0][1] = SE23_R(0);
+    A->m[0][2] = SE23_R(0);
+    A->m[1][0] = SE23_R(0);
+    A->m[1][1] = SE23_R(0);
+    A->m[1][2] = SE23_R(0);
+    A->m[2][0] = SE23_R(0);
+    A->m[2][1] = SE23_R(0);
+    A->m[2][2] = SE23_R(0);
+}
+
 void se23_input_blocks(se23_input_jac_kind_t kind,
                        const se23_increment_parts_t *q, const se23_mat3_t *R,
                        const se23_vec3_t *f, se23_real_t dt,
                        se23_input_blocks_t *Bt)
 {
-    const se23_mat3_t zero = {{{SE23_R(0)}}};
-    Bt->blk[0][1] = zero;
+    zero_block(&Bt->blk[0][1]);
     if (kind == SE23_INPUT_JAC_BASIC) {
         /* D^-1 dt I_{9,6}: dt R in the rotation and velocity rows. */
         se23_m3_scale(R, dt, &Bt->blk[0][0]);
-        Bt->blk[1][0] = zero;
+        zero_block(&Bt->blk[1][0]);
         se23_m3_scale(R, dt, &Bt->blk[1][1]);
-        Bt->blk[2][0] = zero;
-        Bt->blk[2][1] = zero;
+        zero_block(&Bt->blk[2][0]);
+        zero_block(&Bt->blk[2][1]);
         return;
     }
     deriv_coeffs_t d;

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Writes src/cov_step_kernel.c, the per-sample covariance kernels of
-cov_step.h as straight-line code, one function for 9 states and one for 15.
+cov_step.h as straight-line code: the covariance step for 9 states and for
+15, and the bias-Jacobian step of a preintegrated factor.
 
   python3 tools/gen/gen_cov_step.py           write the file
   python3 tools/gen/gen_cov_step.py --check   exit 1 if it is not current
@@ -16,6 +17,7 @@ it overwrites: out may alias P.
 """
 import os
 import sys
+import textwrap
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 OUT = os.path.join(HERE, "..", "..", "src", "cov_step_kernel.c")
@@ -25,7 +27,9 @@ class Gen:
     """Emits the statements of one function. An entry of a 3x3 block is
     None (a structural zero) or (sign, name) of a scalar local."""
 
-    def __init__(self, used=None):
+    def __init__(self, used=None, src="P", dst="out", stride=None, prefix="p"):
+        self.src, self.dst, self.stride = src, dst, stride  # stride None: `stride`
+        self.prefix = prefix  # of the locals read from src
         self.lines = []
         self.ntmp = 0
         self.muls = 0
@@ -35,11 +39,12 @@ class Gen:
         self.record = used is None
         self.pending = []  # (row, col, entry) stores not yet emitted
         self.lazy = []  # [emitted entry or None, base, products] per sum
+        self.stores = 0
         self.inputs = {}  # local -> its read from U, Bt or q, declared at first use
 
     # --- loads of P, lazy ---------------------------------------------------
     def p_name(self, r, c):
-        return "p%d_%d" % (r, c)
+        return "%s%d_%d" % (self.prefix, r, c)
 
     def load(self, r, c):
         name = self.p_name(r, c)
@@ -47,8 +52,22 @@ class Gen:
             self.used.add((r, c))
         if name not in self.loaded:
             self.loaded.add(name)
-            self.lines.append("const se23_real_t %s = P[%s];" % (name, index(r, c)))
+            self.lines.append("const se23_real_t %s = %s[%s];"
+                              % (name, self.src, self.index(r, c)))
         return (1, name)
+
+    def index(self, r, c):
+        """The C index of entry (r, c)."""
+        if self.stride is not None:
+            return "%d" % (self.stride * r + c)
+        row = {0: "", 1: "stride"}.get(r, "(stride * %d)" % r)
+        if not row:
+            return "%d" % c
+        return row if c == 0 else "%s + %d" % (row, c)
+
+    def m_block(self, r0, c0):
+        """The 3x3 block of a general (not symmetric) input at (r0, c0)."""
+        return [[("P", r0 + a, c0 + b) for b in range(3)] for a in range(3)]
 
     def p_block(self, r0, c0):
         """The 3x3 block of P at (r0, c0), r0 <= c0 (upper triangle)."""
@@ -91,6 +110,8 @@ class Gen:
         single unsigned factor is returned as it is, without a statement."""
         if not terms:
             return None
+        # the unit factor of an added block (lin's extra) is not multiplied
+        terms = [(sg, [f for f in fs if f != ONE[1]] or [ONE[1]]) for sg, fs in terms]
         if len(terms) == 1 and len(terms[0][1]) == 1:
             return (terms[0][0], terms[0][1][0])
         # a lone factor (the block being added to) goes first
@@ -114,16 +135,22 @@ class Gen:
         self.flush()
         return (1, name)
 
-    def lin(self, pairs, base=None, sym=False):
-        """base + sum of L M over pairs (L, M); with sym the result is
-        symmetric: the upper triangle is computed and mirrored. Entries
-        are emitted when first needed, so unused ones cost nothing."""
+    def lin(self, pairs, base=None, sym=False, extra=None):
+        """base (+ the block extra) + sum of L M over pairs (L, M); with sym
+        the result is symmetric: the upper triangle is computed and
+        mirrored. Entries are emitted when first needed, so unused ones
+        cost nothing."""
         out = [[None] * 3 for _ in range(3)]
         for i in range(3):
             for j in range(i if sym else 0, 3):
                 b = base[i][j] if base is not None else None
                 products = [(L[i][k], M[k][j]) for L, M in pairs for k in range(3)
                             if L[i][k] is not None and M[k][j] is not None]
+                if extra is not None and extra[i][j] is not None:
+                    if b is None:
+                        b = extra[i][j]
+                    else:  # base + extra: a product with the unit factor
+                        products.append((extra[i][j], ONE))
                 if b is None and not products:
                     continue
                 self.lazy.append([None, b, products])
@@ -137,6 +164,15 @@ class Gen:
         return self.lin([(diag(s), B)])
 
     # --- stores -------------------------------------------------------------
+    def put_block(self, lhs, blk, upper=False):
+        """The scratch block lhs (a se23_mat3_t lvalue, never aliasing P) =
+        blk; with upper, its upper triangle only."""
+        for a in range(3):
+            for b in range(a if upper else 0, 3):
+                e = self.value(blk[a][b])
+                rhs = "SE23_R(0)" if e is None else ("-" if e[0] < 0 else "") + e[1]
+                self.lines.append("%s.m[%d][%d] = %s;" % (lhs, a, b, rhs))
+
     def store_block(self, r0, c0, blk, mirror):
         for a in range(3):
             for b in range(3):
@@ -163,7 +199,8 @@ class Gen:
                 rhs = "SE23_R(0)"
             else:
                 rhs = ("-" if e[0] < 0 else "") + e[1]
-            self.lines.append("out[%s] = %s;" % (index(r, c), rhs))
+            self.lines.append("%s[%s] = %s;" % (self.dst, self.index(r, c), rhs))
+            self.stores += 1
         self.pending = keep
 
     def finish(self):
@@ -174,12 +211,7 @@ class Gen:
         assert not self.pending
 
 
-def index(r, c):
-    """The C index of entry (r, c) in a matrix of row stride `stride`."""
-    row = {0: "", 1: "stride"}.get(r, "(stride * %d)" % r)
-    if not row:
-        return "%d" % c
-    return row if c == 0 else "%s + %d" % (row, c)
+ONE = (1, "SE23_R(1)")
 
 
 def diag(s):
@@ -205,15 +237,19 @@ def named(prefix):
 PHI, NU, RHO = 0, 1, 2
 
 
-def kernel(g, bias):
-    """The covariance step (cov_step.h) on Gen g; bias: 15 states."""
+def kernel(g, mode):
+    """The covariance step (cov_step.h) on Gen g. mode "pose9": 9 states;
+    15 states in two stages (each its own function, so that neither holds
+    the other's values in registers): "bias15" computes Y = G C and
+    Zq = Y + Bt Bb + N Bt into the scratch blocks Y and Zq and stores the
+    cross and bias blocks, "pose15" the pose blocks from Y and Zq."""
+    bias = mode != "pose9"
     R = named("r")
     Rt = tr(R)
     Vp, Vm = skew("vel", 1), skew("vel", -1)
     Pp, Pm = skew("pos", 1), skew("pos", -1)
     dtI = diag("dt")
-    Bt = [[named("b%d%d_" % (i, k)) if not (i == PHI and k == 1) else None
-           for k in range(2)] for i in range(3)]
+    Bt = [[input_block(i, k) for k in range(2)] for i in range(3)]
     qs = ["qg", "qa"]
 
     def X(i, j):
@@ -227,21 +263,39 @@ def kernel(g, bias):
     W = [[None] * 3 for _ in range(3)]
     for j in range(3):
         W[0][j], W[1][j], W[2][j] = X(0, j), None, None
-    # Y = G C and Z = Y + Bt Bb (15 states)
-    if bias:
+    if mode == "bias15":
         Bb = [[g.p_block(9 + 3 * k, 9 + 3 * l) if k <= l else tr(g.p_block(9 + 3 * l, 9 + 3 * k))
                for l in range(2)] for k in range(2)]
-        Y = [[None] * 2 for _ in range(3)]
-        Z = [[None] * 2 for _ in range(3)]
         for k in range(2):
-            Y[0][k], Y[1][k], Y[2][k] = shear(g.p_block(0, 9 + 3 * k), g.p_block(3, 9 + 3 * k),
-                                              g.p_block(6, 9 + 3 * k))
+            Y = shear(g.p_block(0, 9 + 3 * k), g.p_block(3, 9 + 3 * k), g.p_block(6, 9 + 3 * k))
             for i in range(3):
                 pairs = [(Bt[i][l], Bb[l][k]) for l in range(2) if Bt[i][l] is not None]
-                Z[i][k] = g.lin(pairs, base=Y[i][k])
-        # (Z_jk + q_k Bt_jk)^T
-        Zq = [[tr(g.lin([(diag(qs[k]), Bt[j][k])], base=Z[j][k])) if Bt[j][k] is not None
-               else tr(Z[j][k]) for k in range(2)] for j in range(3)]
+                Z = g.lin(pairs, base=Y[i])
+                Zq = Z if Bt[i][k] is None else g.lin([(diag(qs[k]), Bt[i][k])], base=Z)
+                g.put_block("Y->blk[%d][%d]" % (i, k), Y[i])
+                g.put_block("Zq->blk[%d][%d]" % (i, k), Zq)
+                g.store_block(3 * i, 9 + 3 * k, g.lin([(Rt, Z)]), mirror=True)
+        ws = ["wg", "wa"]
+        for k in range(2):
+            for l in range(k, 2):
+                blk = Bb[k][l]
+                for a in range(3):
+                    for b in range(3):
+                        r, c = 9 + 3 * k + a, 9 + 3 * l + b
+                        if r > c:
+                            continue
+                        e = blk[a][b]
+                        if r == c:
+                            e = g.value(e)
+                            e = g.emit([(e[0], [e[1]]), (1, [ws[k]])])
+                        g.store(r, c, e)
+                        if r != c:
+                            g.store(c, r, e)
+        g.finish()
+        return
+    if bias:
+        Y = [[named("y%d%d_" % (i, k)) for k in range(2)] for i in range(3)]
+        Zq = [[tr(named("z%d%d_" % (j, k))) for k in range(2)] for j in range(3)]
     else:
         qBtT = [[tr(g.scale(qs[k], Bt[j][k])) if Bt[j][k] is not None else None
                  for k in range(2)] for j in range(3)]
@@ -261,11 +315,9 @@ def kernel(g, bias):
         return pairs
 
     def finish(i, j, A_pairs, A_base):
-        """out block (i, j) = R^T (A_ij + E_ij) R, and its mirror."""
+        """Scratch block (i, j) = A_ij + E_ij (upper triangle if i = j)."""
         S = g.lin(A_pairs + input_pairs(i, j), base=A_base, sym=(i == j))
-        T = g.lin([(Rt, S)])
-        O = g.lin([(T, R)], sym=(i == j))
-        g.store_block(3 * i, 3 * j, O, mirror=(i != j))
+        g.put_block("S->blk[%d][%d]" % (i, j), S, upper=(i == j))
 
     # The in-place order: (2,2), (1,2), (1,1), (0,2), (0,1), (0,0).
     W[1][0], W[2][0] = shear(X(0, 0), X(1, 0), X(2, 0))[1:]
@@ -278,30 +330,50 @@ def kernel(g, bias):
     finish(PHI, RHO, [(W[0][0], Pp), (W[0][1], dtI)], W[0][2])
     finish(PHI, NU, [(W[0][0], Vp)], W[0][1])
     finish(PHI, PHI, [], W[0][0])
-    if bias:
-        for i in range(3):
-            for k in range(2):
-                g.store_block(3 * i, 9 + 3 * k, g.lin([(Rt, Z[i][k])]), mirror=True)
-        ws = ["wg", "wa"]
-        for k in range(2):
-            for l in range(k, 2):
-                blk = Bb[k][l]
-                for a in range(3):
-                    for b in range(3):
-                        r, c = 9 + 3 * k + a, 9 + 3 * l + b
-                        if r > c:
-                            continue
-                        e = blk[a][b]
-                        if r == c:
-                            e = g.value(e)
-                            e = g.emit([(e[0], [e[1]]), (1, [ws[k]])])
-                        g.store(r, c, e)
-                        if r != c:
-                            g.store(c, r, e)
     g.finish()
 
 
-def inputs(bias):
+def rotate_kernel(g):
+    """out's pose blocks (i, j), i <= j, and their mirrors = R^T S_ij R,
+    S the scratch of the first stage (diagonal blocks: upper triangles)."""
+    R = named("r")
+    Rt = tr(R)
+    for i in range(3):
+        for j in range(i, 3):
+            S = named("s%d%d_" % (i, j))
+            if i == j:
+                for a in range(3):
+                    for b in range(a):
+                        S[a][b] = S[b][a]
+            T = g.lin([(Rt, S)])
+            g.store_block(3 * i, 3 * j, g.lin([(T, R)], sym=(i == j)), mirror=(i != j))
+    g.finish()
+
+
+def jac_kernel(g):
+    """J <- F_k J + B_k = D (G J + Bt) in place (cov_step.h), J 9x6 of
+    stride 6: per accelerometer/gyro column block k, the rows of G J plus
+    Bt's blocks, each rotated by R^T."""
+    R = named("r")
+    Rt = tr(R)
+    Vm, Pm = skew("vel", -1), skew("pos", -1)
+    dtI = diag("dt")
+    for k in range(2):
+        J0, J1, J2 = g.m_block(0, 3 * k), g.m_block(3, 3 * k), g.m_block(6, 3 * k)
+        rows = [g.lin([], base=J0, extra=input_block(0, k)),
+                g.lin([(Vm, J0)], base=J1, extra=input_block(1, k)),
+                g.lin([(dtI, J1), (Pm, J0)], base=J2, extra=input_block(2, k))]
+        for i in range(3):
+            g.store_block(3 * i, 3 * k, g.lin([(Rt, rows[i])]), mirror=False)
+    g.finish()
+
+
+def input_block(i, k):
+    """Block (i, k) of Bt as locals; None for its zero block (phi, accel)."""
+    return None if (i == PHI and k == 1) else named("b%d%d_" % (i, k))
+
+
+def inputs():
     """The locals of U, Bt and q: read where first used (they cannot alias
     out, so their reads may follow stores)."""
     ins = {}
@@ -318,41 +390,89 @@ def inputs(bias):
                     ins["b%d%d_%d%d" % (i, k, a, b)] = "Bt->blk[%d][%d].m[%d][%d]" % (i, k, a, b)
     for name in ("qg", "qa", "wg", "wa"):
         ins[name] = "q->" + name
+    for i in range(3):
+        for j in range(3):
+            for a in range(3):
+                for b in range(3):
+                    ins["s%d%d_%d%d" % (i, j, a, b)] = "S->blk[%d][%d].m[%d][%d]" % (i, j, a, b)
+    for i in range(3):
+        for k in range(2):
+            for a in range(3):
+                for b in range(3):
+                    ins["y%d%d_%d%d" % (i, k, a, b)] = "Y->blk[%d][%d].m[%d][%d]" % (i, k, a, b)
+                    ins["z%d%d_%d%d" % (i, k, a, b)] = "Zq->blk[%d][%d].m[%d][%d]" % (i, k, a, b)
     return ins
 
 
-def function(n):
-    bias = n == 15
+# name, what it is, parameters
+SIGNATURES = {
+    "pose9": ("se23_cov_step9_pre", "9 states, first stage: S = G X G^T + E",
+              "const se23_pose_t *U, se23_real_t dt, const se23_input_blocks_t *Bt,\n"
+              "const se23_step_noise_t *q, const se23_real_t *P, int stride,\n"
+              "se23_cov_pose_t *S"),
+    "bias15": ("se23_cov_step15_bias", "15 states, first stage: Y, Zq, the cross and "
+               "bias blocks",
+               "const se23_pose_t *U, se23_real_t dt, const se23_input_blocks_t *Bt,\n"
+               "const se23_step_noise_t *q, const se23_real_t *P, se23_real_t *out,\n"
+               "int stride, se23_cov_cross_t *Y, se23_cov_cross_t *Zq"),
+    "pose15": ("se23_cov_step15_pre", "15 states, second stage: S = G X G^T + E",
+               "const se23_pose_t *U, se23_real_t dt, const se23_input_blocks_t *Bt,\n"
+               "const se23_cov_cross_t *Y, const se23_cov_cross_t *Zq,\n"
+               "const se23_real_t *P, int stride, se23_cov_pose_t *S"),
+    "rotate": ("se23_cov_rotate_pose", "the last stage: the pose blocks R^T S R",
+               "const se23_pose_t *U, const se23_cov_pose_t *S, se23_real_t *out,\n"
+               "int stride"),
+}
+
+
+def function(mode):
+    def run(g):
+        g.inputs = inputs()
+        if mode == "rotate":
+            rotate_kernel(g)
+        else:
+            kernel(g, mode)
     probe = Gen()
-    probe.inputs = inputs(bias)
-    kernel(probe, bias)
+    run(probe)
     g = Gen(used=probe.used)
-    g.inputs = inputs(bias)
-    kernel(g, bias)
-    body = g.lines
-    text = "\n".join("    " + s for s in body)
-    name = "se23_cov_step%d" % n
-    doc = ("/* %d states: %d multiplies and %d adds (fused into multiply-adds\n"
-           " * where the target has them), %d reads of P, %d stores. */\n"
-           % (n, g.muls, g.adds, len(g.loaded), n * n))
-    sig = ("void %s(const se23_pose_t *U, se23_real_t dt,\n"
-           "%s const se23_input_blocks_t *Bt, const se23_step_noise_t *q,\n"
-           "%s const se23_real_t *P, se23_real_t *out, int stride)\n"
-           % (name, " " * (len(name) + 5), " " * (len(name) + 5)))
-    return doc + sig + "{\n" + text + "\n}\n"
+    run(g)
+    name, what, params = SIGNATURES[mode]
+    pad = " " * (len(name) + 6)
+    doc = textwrap.wrap("%s: %d multiplies and %d adds (fused into multiply-adds "
+                        "where the target has them); reads %d entries of P, stores %d."
+                        % (what, g.muls, g.adds, len(g.loaded), g.stores), 72)
+    doc = "/* " + "\n * ".join(doc) + " */\n"
+    sig = "void %s(%s)\n" % (name, params.replace("\n", "\n" + pad))
+    return doc + sig + "{\n" + "\n".join("    " + x for x in g.lines) + "\n}\n"
+
+
+def jac_function():
+    probe = Gen(src="J->m", dst="J->m", stride=6, prefix="j")
+    probe.inputs = inputs()
+    jac_kernel(probe)
+    g = Gen(used=probe.used, src="J->m", dst="J->m", stride=6, prefix="j")
+    g.inputs = inputs()
+    jac_kernel(g)
+    doc = ("/* %d multiplies and %d adds, %d reads of J, 54 stores. */\n"
+           % (g.muls, g.adds, len(g.loaded)))
+    sig = ("void se23_cov_jac_step(const se23_pose_t *U, se23_real_t dt,\n"
+           "                       const se23_input_blocks_t *Bt, se23_mat9x6_t *J)\n")
+    return doc + sig + "{\n" + "\n".join("    " + x for x in g.lines) + "\n}\n"
 
 
 def source():
     parts = []
-    for n in (9, 15):
-        parts.append(function(n))
+    for mode in ("pose9", "bias15", "pose15", "rotate"):
+        parts.append(function(mode))
+    parts.append(jac_function())
     return ("/* Generated by tools/gen/gen_cov_step.py: do not edit; change the\n"
             " * generator and run it (make check fails while this file is stale).\n"
             " *\n"
-            " * The per-sample covariance step of cov_step.h, out = Phi P Phi^T +\n"
-            " * diag(B_k N B_k^T, W), as straight-line code: the block algorithm of\n"
-            " * cov_step.c's file comment with every 3x3 product expanded and its\n"
-            " * structural zeros skipped. */\n"
+            " * The per-sample kernels of cov_step.h as straight-line code: the\n"
+            " * covariance step out = Phi P Phi^T + diag(B_k N B_k^T, W) (the block\n"
+            " * algorithm of cov_step.c's file comment) and the bias-Jacobian step\n"
+            " * J <- D (G J + Bt), every 3x3 product expanded and its structural\n"
+            " * zeros skipped. */\n"
             "#include \"cov_step.h\"\n\n" + "\n".join(parts))
 
 
