@@ -25,6 +25,22 @@ se23_status_t se23_imu_sample_check(const se23_imu_sample_t *s, se23_real_t dt_m
     return SE23_OK;
 }
 
+/* The largest |f|_1 of a tame sample (imu_step.h). */
+#if SE23_CFG_DOUBLE
+#define SE23_SAMPLE_F_TAME SE23_R(1e154)
+#else
+#define SE23_SAMPLE_F_TAME SE23_R(1e19)
+#endif
+
+int se23_sample_tame(const se23_imu_sample_t *s)
+{
+    const se23_real_t w1 = se23_fabs(s->w_ib_b.v[0]) + se23_fabs(s->w_ib_b.v[1]) +
+                           se23_fabs(s->w_ib_b.v[2]);
+    const se23_real_t f1 = se23_fabs(s->f_b.v[0]) + se23_fabs(s->f_b.v[1]) +
+                           se23_fabs(s->f_b.v[2]);
+    return (s->dt <= SE23_R(8)) && (w1 * s->dt <= SE23_R(8)) && (f1 <= SE23_SAMPLE_F_TAME);
+}
+
 /* phi = w dt, the series coefficients at |phi|, and R = exp(phi). */
 static void rotation_increment(const se23_imu_sample_t *s, se23_vec3_t *phi,
                                se23_real_t *theta, se23_so3_coeffs_t *c,
@@ -39,19 +55,15 @@ static void rotation_increment(const se23_imu_sample_t *s, se23_vec3_t *phi,
 void se23_imu_increment_parts(const se23_imu_sample_t *s, se23_pose_t *ups,
                               se23_increment_parts_t *parts)
 {
-    se23_increment_parts_t q;
-    se23_pose_t out;
-    rotation_increment(s, &q.th, &q.t, &q.c, &out.R);
-    se23_m3_series(SE23_R(1), q.c.c2, q.c.c3, &q.th, &q.J);
-    se23_m3_mul_v3(&q.J, &s->f_b, &out.v);
-    se23_v3_scale(&out.v, s->dt, &out.v);
-    se23_m3_series(SE23_R(0.5), q.c.c3, q.c.c4, &q.th, &q.H);
-    se23_m3_mul_v3(&q.H, &s->f_b, &out.p);
-    se23_v3_scale(&out.p, s->dt * s->dt, &out.p);
-    *ups = out;
-    if (parts != NULL) {
-        *parts = q;
-    }
+    se23_increment_parts_t local;
+    se23_increment_parts_t *q = (parts != NULL) ? parts : &local;
+    rotation_increment(s, &q->th, &q->t, &q->c, &ups->R);
+    se23_m3_series(SE23_R(1), q->c.c2, q->c.c3, &q->th, &q->J);
+    se23_m3_mul_v3(&q->J, &s->f_b, &ups->v);
+    se23_v3_scale(&ups->v, s->dt, &ups->v);
+    se23_m3_series(SE23_R(0.5), q->c.c3, q->c.c4, &q->th, &q->H);
+    se23_m3_mul_v3(&q->H, &s->f_b, &ups->p);
+    se23_v3_scale(&ups->p, s->dt * s->dt, &ups->p);
 }
 
 se23_status_t se23_imu_increment(const se23_imu_sample_t *s, se23_pose_t *ups)
@@ -169,8 +181,9 @@ se23_status_t se23_imu_step_ups(const se23_earth_model_t *model,
     se23_imu_increment_parts(s, &u, parts);
     se23_imu_transition(gamma, T, &u, s->dt, &next);
     /* Finite inputs can still overflow (|f| dt near the largest real, or a
-     * state near it): refuse instead of returning Inf with SE23_OK. */
-    if (!se23_pose_finite(&u) || !se23_pose_finite(&next)) {
+     * state near it): refuse instead of returning Inf with SE23_OK. The
+     * increment of a tame sample cannot. */
+    if ((!se23_sample_tame(s) && !se23_pose_finite(&u)) || !se23_pose_finite(&next)) {
         return SE23_ERR_NONFINITE;
     }
     *T_next = next;

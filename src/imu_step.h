@@ -24,6 +24,17 @@ typedef struct {
  *  0 < dt <= dt_max. */
 se23_status_t se23_imu_sample_check(const se23_imu_sample_t *s, se23_real_t dt_max);
 
+/**
+ * Nonzero for every sample an IMU gives: |w dt|_1 <= 8, dt <= 8 and
+ * |f|_1 <= SE23_SAMPLE_F_TAME, about the square root of the largest real.
+ * Then nothing the increment and its input matrix compute can overflow:
+ * every series coefficient and derivative they use is at most 1 in
+ * magnitude (|th| <= 8), and each intermediate is at most
+ * 4 (1 + |f|_1) (1 + |w dt|_1)^3 (1 + dt)^3 < 2^23 (1 + |f|_1) (see
+ * se23_input_blocks_finite). O(1); NaN is not tame.
+ */
+int se23_sample_tame(const se23_imu_sample_t *s);
+
 /** ups = the exact Upsilon of a checked sample and, if parts is not NULL,
  *  its parts. No checks. */
 void se23_imu_increment_parts(const se23_imu_sample_t *s, se23_pose_t *ups,

@@ -185,7 +185,7 @@ se23_status_t se23_preint_unc_add(se23_preint_unc_t *fu,
     se23_imu_increment_parts(&c, &U, &parts);
     se23_input_blocks(fu->kind, &parts, &U.R, &c.f_b, c.dt, &Bt);
     if (!se23_all_finite(&U.R.m[0][0], 9) || !se23_all_finite(U.v.v, 3) ||
-        !se23_all_finite(U.p.v, 3) || !se23_input_blocks_finite(&Bt, &parts, &c.f_b, c.dt) ||
+        !se23_all_finite(U.p.v, 3) || !se23_input_blocks_finite(&Bt, &c) ||
         !se23_cov_step_fits(&U, c.dt, se23_input_blocks_bound(&c.f_b, c.dt), &q,
                             SE23_GAUSS_N_POSE, fu->P.m, 9)) {
         return SE23_ERR_NONFINITE; /* the increment, B_k or P+ would overflow */

@@ -170,8 +170,11 @@ class Gen:
         for a in range(3):
             for b in range(a if upper else 0, 3):
                 e = self.value(blk[a][b])
+                dst = "%s.m[%d][%d]" % (lhs, a, b)
+                if e is not None and e[0] > 0 and self.inputs.get(e[1]) == dst:
+                    continue  # the entry is unchanged
                 rhs = "SE23_R(0)" if e is None else ("-" if e[0] < 0 else "") + e[1]
-                self.lines.append("%s.m[%d][%d] = %s;" % (lhs, a, b, rhs))
+                self.lines.append("%s = %s;" % (dst, rhs))
 
     def store_block(self, r0, c0, blk, mirror):
         for a in range(3):
@@ -238,12 +241,14 @@ PHI, NU, RHO = 0, 1, 2
 
 
 def kernel(g, mode):
-    """The covariance step (cov_step.h) on Gen g. mode "pose9": 9 states;
-    15 states in two stages (each its own function, so that neither holds
-    the other's values in registers): "bias15" computes Y = G C and
-    Zq = Y + Bt Bb + N Bt into the scratch blocks Y and Zq and stores the
-    cross and bias blocks, "pose15" the pose blocks from Y and Zq."""
-    bias = mode != "pose9"
+    """The first stages of the covariance step (cov_step.h) on Gen g, up
+    to the scratch S of the pose blocks before the rotation. mode "pose9":
+    S = G X G^T + E for 9 states. 15 states in three stages, each its own
+    function so that none holds another's values in registers: "bias15g"
+    and "bias15a" store the cross blocks of the gyro and the accel bias and
+    S = E (from Y = G C and Zq = Y + Bt Bb + Bt N, by bias column), the
+    second also the bias block; "pose15" adds G X G^T to S."""
+    bias = mode != "pose9"  # the 15-state stages
     R = named("r")
     Rt = tr(R)
     Vp, Vm = skew("vel", 1), skew("vel", -1)
@@ -263,60 +268,64 @@ def kernel(g, mode):
     W = [[None] * 3 for _ in range(3)]
     for j in range(3):
         W[0][j], W[1][j], W[2][j] = X(0, j), None, None
-    if mode == "bias15":
-        Bb = [[g.p_block(9 + 3 * k, 9 + 3 * l) if k <= l else tr(g.p_block(9 + 3 * l, 9 + 3 * k))
-               for l in range(2)] for k in range(2)]
-        for k in range(2):
-            Y = shear(g.p_block(0, 9 + 3 * k), g.p_block(3, 9 + 3 * k), g.p_block(6, 9 + 3 * k))
-            for i in range(3):
-                pairs = [(Bt[i][l], Bb[l][k]) for l in range(2) if Bt[i][l] is not None]
-                Z = g.lin(pairs, base=Y[i])
-                Zq = Z if Bt[i][k] is None else g.lin([(diag(qs[k]), Bt[i][k])], base=Z)
-                g.put_block("Y->blk[%d][%d]" % (i, k), Y[i])
-                g.put_block("Zq->blk[%d][%d]" % (i, k), Zq)
-                g.store_block(3 * i, 9 + 3 * k, g.lin([(Rt, Z)]), mirror=True)
-        ws = ["wg", "wa"]
-        for k in range(2):
-            for l in range(k, 2):
-                blk = Bb[k][l]
+    if mode in ("bias15g", "bias15a"):
+        # one stage per bias column k (gyro, then accel), so that only
+        # column k's Y and Zq are live: S = the k = 0 terms of E, then
+        # S += the k = 1 terms
+        k = 0 if mode == "bias15g" else 1
+        Bb = [[g.p_block(9 + 3 * a, 9 + 3 * b) if a <= b else tr(g.p_block(9 + 3 * b, 9 + 3 * a))
+               for b in range(2)] for a in range(2)]
+        Y = shear(g.p_block(0, 9 + 3 * k), g.p_block(3, 9 + 3 * k), g.p_block(6, 9 + 3 * k))
+        Zq = [None] * 3
+        for i in range(3):
+            pairs = [(Bt[i][l], Bb[l][k]) for l in range(2) if Bt[i][l] is not None]
+            Z = g.lin(pairs, base=Y[i])
+            Zq[i] = Z if Bt[i][k] is None else g.lin([(diag(qs[k]), Bt[i][k])], base=Z)
+            g.store_block(3 * i, 9 + 3 * k, g.lin([(Rt, Z)]), mirror=True)
+        for i in range(3):
+            for j in range(i, 3):
+                pairs = []
+                if Bt[i][k] is not None:
+                    pairs.append((Bt[i][k], tr(Zq[j])))
+                if Bt[j][k] is not None:
+                    pairs.append((Y[i], tr(Bt[j][k])))
+                prev = scratch_block(i, j) if k == 1 else None
+                g.put_block("S->blk[%d][%d]" % (i, j), g.lin(pairs, sym=(i == j), extra=prev),
+                            upper=(i == j))
+        if k == 0:
+            g.finish()
+            return
+        ws = ["wg", "wa"]  # the bias block, Bb + W
+        for kb in range(2):
+            for lb in range(kb, 2):
+                blk = Bb[kb][lb]
                 for a in range(3):
                     for b in range(3):
-                        r, c = 9 + 3 * k + a, 9 + 3 * l + b
+                        r, c = 9 + 3 * kb + a, 9 + 3 * lb + b
                         if r > c:
                             continue
                         e = blk[a][b]
                         if r == c:
                             e = g.value(e)
-                            e = g.emit([(e[0], [e[1]]), (1, [ws[k]])])
+                            e = g.emit([(e[0], [e[1]]), (1, [ws[kb]])])
                         g.store(r, c, e)
                         if r != c:
                             g.store(c, r, e)
         g.finish()
         return
-    if bias:
-        Y = [[named("y%d%d_" % (i, k)) for k in range(2)] for i in range(3)]
-        Zq = [[tr(named("z%d%d_" % (j, k))) for k in range(2)] for j in range(3)]
-    else:
+    if not bias:
         qBtT = [[tr(g.scale(qs[k], Bt[j][k])) if Bt[j][k] is not None else None
                  for k in range(2)] for j in range(3)]
 
-    def input_pairs(i, j):
-        """E_ij as pairs (file comment of cov_step.c)."""
-        pairs = []
-        for k in range(2):
-            if Bt[i][k] is None:
-                pass
-            elif bias:
-                pairs.append((Bt[i][k], Zq[j][k]))
-            elif qBtT[j][k] is not None:
-                pairs.append((Bt[i][k], qBtT[j][k]))
-            if bias and Bt[j][k] is not None:
-                pairs.append((Y[i][k], tr(Bt[j][k])))
-        return pairs
-
     def finish(i, j, A_pairs, A_base):
-        """Scratch block (i, j) = A_ij + E_ij (upper triangle if i = j)."""
-        S = g.lin(A_pairs + input_pairs(i, j), base=A_base, sym=(i == j))
+        """Scratch block (i, j) = A_ij + E_ij (upper triangle if i = j):
+        E_ij from the first stage (15 states) or Bt_i N Bt_j^T (9)."""
+        if bias:
+            S = g.lin(A_pairs, base=A_base, sym=(i == j), extra=scratch_block(i, j))
+        else:
+            pairs = [(Bt[i][k], qBtT[j][k]) for k in range(2)
+                     if Bt[i][k] is not None and qBtT[j][k] is not None]
+            S = g.lin(A_pairs + pairs, base=A_base, sym=(i == j))
         g.put_block("S->blk[%d][%d]" % (i, j), S, upper=(i == j))
 
     # The in-place order: (2,2), (1,2), (1,1), (0,2), (0,1), (0,0).
@@ -333,6 +342,17 @@ def kernel(g, mode):
     g.finish()
 
 
+def scratch_block(i, j):
+    """Block (i, j) of the scratch S as locals (diagonal blocks: the upper
+    triangle, mirrored)."""
+    S = named("s%d%d_" % (i, j))
+    if i == j:
+        for a in range(3):
+            for b in range(a):
+                S[a][b] = S[b][a]
+    return S
+
+
 def rotate_kernel(g):
     """out's pose blocks (i, j), i <= j, and their mirrors = R^T S_ij R,
     S the scratch of the first stage (diagonal blocks: upper triangles)."""
@@ -340,12 +360,7 @@ def rotate_kernel(g):
     Rt = tr(R)
     for i in range(3):
         for j in range(i, 3):
-            S = named("s%d%d_" % (i, j))
-            if i == j:
-                for a in range(3):
-                    for b in range(a):
-                        S[a][b] = S[b][a]
-            T = g.lin([(Rt, S)])
+            T = g.lin([(Rt, scratch_block(i, j))])
             g.store_block(3 * i, 3 * j, g.lin([(T, R)], sym=(i == j)), mirror=(i != j))
     g.finish()
 
@@ -395,12 +410,6 @@ def inputs():
             for a in range(3):
                 for b in range(3):
                     ins["s%d%d_%d%d" % (i, j, a, b)] = "S->blk[%d][%d].m[%d][%d]" % (i, j, a, b)
-    for i in range(3):
-        for k in range(2):
-            for a in range(3):
-                for b in range(3):
-                    ins["y%d%d_%d%d" % (i, k, a, b)] = "Y->blk[%d][%d].m[%d][%d]" % (i, k, a, b)
-                    ins["z%d%d_%d%d" % (i, k, a, b)] = "Zq->blk[%d][%d].m[%d][%d]" % (i, k, a, b)
     return ins
 
 
@@ -410,15 +419,19 @@ SIGNATURES = {
               "const se23_pose_t *U, se23_real_t dt, const se23_input_blocks_t *Bt,\n"
               "const se23_step_noise_t *q, const se23_real_t *P, int stride,\n"
               "se23_cov_pose_t *S"),
-    "bias15": ("se23_cov_step15_bias", "15 states, first stage: Y, Zq, the cross and "
-               "bias blocks",
-               "const se23_pose_t *U, se23_real_t dt, const se23_input_blocks_t *Bt,\n"
-               "const se23_step_noise_t *q, const se23_real_t *P, se23_real_t *out,\n"
-               "int stride, se23_cov_cross_t *Y, se23_cov_cross_t *Zq"),
-    "pose15": ("se23_cov_step15_pre", "15 states, second stage: S = G X G^T + E",
-               "const se23_pose_t *U, se23_real_t dt, const se23_input_blocks_t *Bt,\n"
-               "const se23_cov_cross_t *Y, const se23_cov_cross_t *Zq,\n"
-               "const se23_real_t *P, int stride, se23_cov_pose_t *S"),
+    "bias15g": ("se23_cov_step15_gyro", "15 states, first stage: the gyro-bias "
+                "cross blocks, S = E's gyro terms",
+                "const se23_pose_t *U, se23_real_t dt, const se23_input_blocks_t *Bt,\n"
+                "const se23_step_noise_t *q, const se23_real_t *P, se23_real_t *out,\n"
+                "int stride, se23_cov_pose_t *S"),
+    "bias15a": ("se23_cov_step15_accel", "15 states, second stage: the accel-bias "
+                "cross blocks, the bias block, S += E's accel terms",
+                "const se23_pose_t *U, se23_real_t dt, const se23_input_blocks_t *Bt,\n"
+                "const se23_step_noise_t *q, const se23_real_t *P, se23_real_t *out,\n"
+                "int stride, se23_cov_pose_t *S"),
+    "pose15": ("se23_cov_step15_pre", "15 states, third stage: S += G X G^T",
+               "const se23_pose_t *U, se23_real_t dt, const se23_real_t *P, int stride,\n"
+               "se23_cov_pose_t *S"),
     "rotate": ("se23_cov_rotate_pose", "the last stage: the pose blocks R^T S R",
                "const se23_pose_t *U, const se23_cov_pose_t *S, se23_real_t *out,\n"
                "int stride"),
@@ -462,7 +475,7 @@ def jac_function():
 
 def source():
     parts = []
-    for mode in ("pose9", "bias15", "pose15", "rotate"):
+    for mode in ("pose9", "bias15g", "bias15a", "pose15", "rotate"):
         parts.append(function(mode))
     parts.append(jac_function())
     return ("/* Generated by tools/gen/gen_cov_step.py: do not edit; change the\n"
