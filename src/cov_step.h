@@ -66,7 +66,8 @@ int se23_cov_step_fits(const se23_pose_t *U, se23_real_t dt, se23_real_t b,
 
 /**
  * Nonzero if every entry of Bt, built by se23_input_blocks from the parts
- * of the corrected sample s, is finite: O(1) for a tame sample
+ * of a corrected sample, is finite; tame = se23_sample_tame of that
+ * sample. O(1) for a tame sample
  * (se23_sample_tame: each intermediate of se23_input_blocks is then at most
  * 4 (1 + |f|_1) (1 + |w dt|_1)^3 (1 + dt)^3, a bound found term by term in
  * series_deriv with every coefficient at most 1), otherwise a test of each
@@ -74,7 +75,7 @@ int se23_cov_step_fits(const se23_pose_t *U, se23_real_t dt, se23_real_t b,
  * bound of se23_input_blocks_bound, which assumes exact arithmetic, is
  * finite.
  */
-int se23_input_blocks_finite(const se23_input_blocks_t *Bt, const se23_imu_sample_t *s);
+int se23_input_blocks_finite(const se23_input_blocks_t *Bt, int tame);
 
 /** The largest absolute row sum of Bt (45 entries). */
 se23_real_t se23_input_blocks_row_sum(const se23_input_blocks_t *Bt);
