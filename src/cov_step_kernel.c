@@ -653,8 +653,9 @@ void se23_cov_step15_gyro(const se23_pose_t *U, se23_real_t dt, const se23_input
 }
 
 /* 15 states, second stage: the accel-bias cross blocks, the bias block, S
- * += E's accel terms: 459 multiplies and 438 adds (fused into multiply-
- * adds where the target has them); reads 48 entries of P, stores 90. */
+ * += E's accel terms: 459 multiplies and 438 adds (fused into
+ * multiply-adds where the target has them); reads 48 entries of P, stores
+ * 90. */
 void se23_cov_step15_accel(const se23_pose_t *U, se23_real_t dt, const se23_input_blocks_t *Bt,
                            const se23_step_noise_t *q, const se23_real_t *P, se23_real_t *out,
                            int stride, se23_cov_pose_t *S)

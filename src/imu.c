@@ -25,13 +25,6 @@ se23_status_t se23_imu_sample_check(const se23_imu_sample_t *s, se23_real_t dt_m
     return SE23_OK;
 }
 
-/* The largest |f|_1 of a tame sample (imu_step.h). */
-#if SE23_CFG_DOUBLE
-#define SE23_SAMPLE_F_TAME SE23_R(1e154)
-#else
-#define SE23_SAMPLE_F_TAME SE23_R(1e19)
-#endif
-
 int se23_sample_tame(const se23_imu_sample_t *s)
 {
     const se23_real_t w1 = se23_fabs(s->w_ib_b.v[0]) + se23_fabs(s->w_ib_b.v[1]) +

@@ -35,6 +35,13 @@ se23_status_t se23_imu_sample_check(const se23_imu_sample_t *s, se23_real_t dt_m
  */
 int se23_sample_tame(const se23_imu_sample_t *s);
 
+/** The largest |f|_1 of a tame sample [m/s^2]. */
+#if SE23_CFG_DOUBLE
+#define SE23_SAMPLE_F_TAME SE23_R(1e154)
+#else
+#define SE23_SAMPLE_F_TAME SE23_R(1e19)
+#endif
+
 /** ups = the exact Upsilon of a checked sample and, if parts is not NULL,
  *  its parts. No checks. */
 void se23_imu_increment_parts(const se23_imu_sample_t *s, se23_pose_t *ups,

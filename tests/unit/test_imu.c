@@ -13,6 +13,7 @@
 
 #include "se23/imu.h"
 #include "se23/se23.h"
+#include "cov_step.h"
 #include "imu_step.h"
 #include "se23/so3.h"
 #include "se23_test.h"
@@ -666,6 +667,82 @@ static void test_imu_increments_refuse_overflow(void **state)
     assert_memory_equal(&out, &out0, sizeof out);
 }
 
+/* se23_sample_tame's promise (imu_step.h): the increment and the input
+ * matrix of a tame sample are finite, with no test of their entries.
+ * Checked at the corners of the tame set (|w dt|_1 = 8 and |f|_1 at its
+ * limit, random directions, three dt), and both sides of every limit. */
+static int all_finite(const se23_real_t *x, int n)
+{
+    for (int i = 0; i < n; ++i) {
+        if (!isfinite(x[i])) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+static void l1_scale(se23_vec3_t *v, double target)
+{
+    const double l1 = fabs((double)v->v[0]) + fabs((double)v->v[1]) + fabs((double)v->v[2]);
+    for (int i = 0; i < 3; ++i) {
+        v->v[i] = (se23_real_t)((double)v->v[i] * (target / l1));
+    }
+}
+
+static void test_sample_tame_corners_are_finite(void **state)
+{
+    (void)state;
+    const double shrink = 1.0 - 1e-5; /* inside, after the rounding of the scaling */
+    const se23_real_t dts[3] = {SE23_R(1e-4), SE23_R(0.01), SE23_R(SE23_CFG_DT_MAX)};
+    se23t_rng_t rng;
+    se23t_rng_seed(&rng, 91);
+    for (int n = 0; n < 300; ++n) {
+        se23_imu_sample_t s;
+        s.dt = dts[n % 3];
+        se23t_random_vec3(&rng, 1.0, &s.w_ib_b);
+        se23t_random_vec3(&rng, 1.0, &s.f_b);
+        l1_scale(&s.w_ib_b, 8.0 / (double)s.dt * shrink);
+        l1_scale(&s.f_b, (double)SE23_SAMPLE_F_TAME * shrink);
+        assert_true(se23_sample_tame(&s));
+        se23_pose_t U;
+        se23_increment_parts_t parts;
+        se23_input_blocks_t Bt;
+        se23_imu_increment_parts(&s, &U, &parts);
+        se23_input_blocks(SE23_INPUT_JAC_EXACT, &parts, &U.R, &s.f_b, s.dt, &Bt);
+        assert_true(all_finite(&U.R.m[0][0], 9) && all_finite(U.v.v, 3) && all_finite(U.p.v, 3));
+        for (int i = 0; i < 3; ++i) {
+            for (int k = 0; k < 2; ++k) {
+                assert_true(all_finite(&Bt.blk[i][k].m[0][0], 9));
+            }
+        }
+    }
+    /* each limit, from inside and from outside */
+    se23_imu_sample_t s = {{{SE23_R(1), 0, 0}}, {{0, 0, SE23_R(9.8)}}, SE23_R(0.01)};
+    assert_true(se23_sample_tame(&s));
+    se23_imu_sample_t t = s;
+    t.w_ib_b.v[0] = SE23_R(8) / t.dt;
+    assert_true(se23_sample_tame(&t));
+    t.w_ib_b.v[0] = SE23_R(8.01) / t.dt;
+    assert_false(se23_sample_tame(&t));
+    t = s;
+    t.f_b.v[2] = SE23_SAMPLE_F_TAME;
+    assert_true(se23_sample_tame(&t));
+    t.f_b.v[2] = SE23_SAMPLE_F_TAME * SE23_R(1.01);
+    assert_false(se23_sample_tame(&t));
+    t = s;
+    t.dt = SE23_R(8);
+    t.w_ib_b.v[0] = SE23_R(0.5);
+    assert_true(se23_sample_tame(&t));
+    t.dt = SE23_R(8.01);
+    assert_false(se23_sample_tame(&t));
+    t = s;
+    t.f_b.v[1] = (se23_real_t)NAN;
+    assert_false(se23_sample_tame(&t));
+    t = s;
+    t.w_ib_b.v[2] = (se23_real_t)INFINITY;
+    assert_false(se23_sample_tame(&t));
+}
+
 static void test_imu_step_rejects_bad_samples(void **state)
 {
     (void)state;
@@ -765,6 +842,7 @@ int main(void)
         cmocka_unit_test(test_imu_increment_rejects_bad_samples),
         cmocka_unit_test(test_imu_step_ups_matches_step_and_increment),
         cmocka_unit_test(test_imu_increments_refuse_overflow),
+        cmocka_unit_test(test_sample_tame_corners_are_finite),
         cmocka_unit_test(test_imu_step_rejects_bad_samples),
         cmocka_unit_test(test_imu_step_rejects_bad_states),
         cmocka_unit_test(test_imu_null_arguments_return_err_null),

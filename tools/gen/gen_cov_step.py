@@ -453,7 +453,8 @@ def function(mode):
     pad = " " * (len(name) + 6)
     doc = textwrap.wrap("%s: %d multiplies and %d adds (fused into multiply-adds "
                         "where the target has them); reads %d entries of P, stores %d."
-                        % (what, g.muls, g.adds, len(g.loaded), g.stores), 72)
+                        % (what, g.muls, g.adds, len(g.loaded), g.stores), 72,
+                        break_on_hyphens=False)
     doc = "/* " + "\n * ".join(doc) + " */\n"
     sig = "void %s(%s)\n" % (name, params.replace("\n", "\n" + pad))
     return doc + sig + "{\n" + "\n".join("    " + x for x in g.lines) + "\n}\n"
