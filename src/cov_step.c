@@ -195,10 +195,10 @@ void se23_cov_step(const se23_pose_t *U, se23_real_t dt,
     if (n == SE23_GAUSS_N_BIAS) {
         se23_cov_step15_gyro(U, dt, Bt, q, P, out, stride, &S);
         se23_cov_step15_accel(U, dt, Bt, q, P, out, stride, &S);
-        se23_cov_step15_pre(U, dt, P, stride, &S);
     } else {
-        se23_cov_step9_pre(U, dt, Bt, q, P, stride, &S);
+        se23_cov_step9_noise(Bt, q, &S);
     }
+    se23_cov_shear_pose(U, dt, P, stride, &S);
     se23_cov_rotate_pose(U, &S, out, stride);
 }
 

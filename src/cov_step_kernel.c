@@ -8,293 +8,214 @@
  * zeros skipped. */
 #include "cov_step.h"
 
-/* 9 states, first stage: S = G X G^T + E: 459 multiplies and 414 adds
- * (fused into multiply-adds where the target has them); reads 45 entries
- * of P, stores 0. */
-void se23_cov_step9_pre(const se23_pose_t *U, se23_real_t dt, const se23_input_blocks_t *Bt,
-                        const se23_step_noise_t *q, const se23_real_t *P, int stride,
-                        se23_cov_pose_t *S)
+/* 9 states, first stage: S = E = Bt N Bt^T: 243 multiplies and 153 adds
+ * (fused into multiply-adds where the target has them). */
+void se23_cov_step9_noise(const se23_input_blocks_t *Bt, const se23_step_noise_t *q,
+                          se23_cov_pose_t *S)
 {
-    const se23_real_t p6_6 = P[(stride * 6) + 6];
-    const se23_real_t p3_6 = P[(stride * 3) + 6];
-    const se23_real_t p1_6 = P[stride + 6];
-    const se23_real_t p2_6 = P[(stride * 2) + 6];
-    const se23_real_t pos2 = U->p.v[2];
-    const se23_real_t pos1 = U->p.v[1];
-    const se23_real_t t1 = p6_6 + dt * p3_6 + pos2 * p1_6 - pos1 * p2_6;
-    const se23_real_t p1_3 = P[stride + 3];
-    const se23_real_t p1_1 = P[stride + 1];
-    const se23_real_t p1_2 = P[stride + 2];
-    const se23_real_t t2 = p1_6 + dt * p1_3 + pos2 * p1_1 - pos1 * p1_2;
-    const se23_real_t p2_3 = P[(stride * 2) + 3];
-    const se23_real_t p2_2 = P[(stride * 2) + 2];
-    const se23_real_t t3 = p2_6 + dt * p2_3 + pos2 * p1_2 - pos1 * p2_2;
-    const se23_real_t p3_3 = P[(stride * 3) + 3];
-    const se23_real_t t4 = p3_6 + dt * p3_3 + pos2 * p1_3 - pos1 * p2_3;
     const se23_real_t qg = q->qg;
-    const se23_real_t b20_00 = Bt->blk[2][0].m[0][0];
-    const se23_real_t t5 = qg * b20_00;
-    const se23_real_t b20_01 = Bt->blk[2][0].m[0][1];
-    const se23_real_t t6 = qg * b20_01;
-    const se23_real_t b20_02 = Bt->blk[2][0].m[0][2];
-    const se23_real_t t7 = qg * b20_02;
-    const se23_real_t qa = q->qa;
-    const se23_real_t b21_00 = Bt->blk[2][1].m[0][0];
-    const se23_real_t t8 = qa * b21_00;
-    const se23_real_t b21_01 = Bt->blk[2][1].m[0][1];
-    const se23_real_t t9 = qa * b21_01;
-    const se23_real_t b21_02 = Bt->blk[2][1].m[0][2];
-    const se23_real_t t10 = qa * b21_02;
-    const se23_real_t t11 = t1 + t2 * pos2 - t3 * pos1 + t4 * dt + b20_00 * t5 + b20_01 * t6 + b20_02 * t7 + b21_00 * t8 + b21_01 * t9 + b21_02 * t10;
-    S->blk[2][2].m[0][0] = t11;
-    const se23_real_t p6_7 = P[(stride * 6) + 7];
-    const se23_real_t p3_7 = P[(stride * 3) + 7];
-    const se23_real_t p1_7 = P[stride + 7];
-    const se23_real_t p2_7 = P[(stride * 2) + 7];
-    const se23_real_t t12 = p6_7 + dt * p3_7 + pos2 * p1_7 - pos1 * p2_7;
-    const se23_real_t p0_6 = P[6];
-    const se23_real_t p0_3 = P[3];
-    const se23_real_t p0_1 = P[1];
-    const se23_real_t p0_2 = P[2];
-    const se23_real_t t13 = p0_6 + dt * p0_3 + pos2 * p0_1 - pos1 * p0_2;
-    const se23_real_t p4_6 = P[(stride * 4) + 6];
-    const se23_real_t p3_4 = P[(stride * 3) + 4];
-    const se23_real_t p1_4 = P[stride + 4];
-    const se23_real_t p2_4 = P[(stride * 2) + 4];
-    const se23_real_t t14 = p4_6 + dt * p3_4 + pos2 * p1_4 - pos1 * p2_4;
-    const se23_real_t b20_10 = Bt->blk[2][0].m[1][0];
-    const se23_real_t t15 = qg * b20_10;
-    const se23_real_t b20_11 = Bt->blk[2][0].m[1][1];
-    const se23_real_t t16 = qg * b20_11;
-    const se23_real_t b20_12 = Bt->blk[2][0].m[1][2];
-    const se23_real_t t17 = qg * b20_12;
-    const se23_real_t b21_10 = Bt->blk[2][1].m[1][0];
-    const se23_real_t t18 = qa * b21_10;
-    const se23_real_t b21_11 = Bt->blk[2][1].m[1][1];
-    const se23_real_t t19 = qa * b21_11;
-    const se23_real_t b21_12 = Bt->blk[2][1].m[1][2];
-    const se23_real_t t20 = qa * b21_12;
-    const se23_real_t pos0 = U->p.v[0];
-    const se23_real_t t21 = t12 - t13 * pos2 + t3 * pos0 + t14 * dt + b20_00 * t15 + b20_01 * t16 + b20_02 * t17 + b21_00 * t18 + b21_01 * t19 + b21_02 * t20;
-    S->blk[2][2].m[0][1] = t21;
-    const se23_real_t p6_8 = P[(stride * 6) + 8];
-    const se23_real_t p3_8 = P[(stride * 3) + 8];
-    const se23_real_t p1_8 = P[stride + 8];
-    const se23_real_t p2_8 = P[(stride * 2) + 8];
-    const se23_real_t t22 = p6_8 + dt * p3_8 + pos2 * p1_8 - pos1 * p2_8;
-    const se23_real_t p5_6 = P[(stride * 5) + 6];
-    const se23_real_t p3_5 = P[(stride * 3) + 5];
-    const se23_real_t p1_5 = P[stride + 5];
-    const se23_real_t p2_5 = P[(stride * 2) + 5];
-    const se23_real_t t23 = p5_6 + dt * p3_5 + pos2 * p1_5 - pos1 * p2_5;
-    const se23_real_t b20_20 = Bt->blk[2][0].m[2][0];
-    const se23_real_t t24 = qg * b20_20;
-    const se23_real_t b20_21 = Bt->blk[2][0].m[2][1];
-    const se23_real_t t25 = qg * b20_21;
-    const se23_real_t b20_22 = Bt->blk[2][0].m[2][2];
-    const se23_real_t t26 = qg * b20_22;
-    const se23_real_t b21_20 = Bt->blk[2][1].m[2][0];
-    const se23_real_t t27 = qa * b21_20;
-    const se23_real_t b21_21 = Bt->blk[2][1].m[2][1];
-    const se23_real_t t28 = qa * b21_21;
-    const se23_real_t b21_22 = Bt->blk[2][1].m[2][2];
-    const se23_real_t t29 = qa * b21_22;
-    const se23_real_t t30 = t22 + t13 * pos1 - t2 * pos0 + t23 * dt + b20_00 * t24 + b20_01 * t25 + b20_02 * t26 + b21_00 * t27 + b21_01 * t28 + b21_02 * t29;
-    S->blk[2][2].m[0][2] = t30;
-    const se23_real_t p7_7 = P[(stride * 7) + 7];
-    const se23_real_t p4_7 = P[(stride * 4) + 7];
-    const se23_real_t p0_7 = P[7];
-    const se23_real_t t31 = p7_7 + dt * p4_7 - pos2 * p0_7 + pos0 * p2_7;
-    const se23_real_t p0_4 = P[4];
-    const se23_real_t p0_0 = P[0];
-    const se23_real_t t32 = p0_7 + dt * p0_4 - pos2 * p0_0 + pos0 * p0_2;
-    const se23_real_t t33 = p2_7 + dt * p2_4 - pos2 * p0_2 + pos0 * p2_2;
-    const se23_real_t p4_4 = P[(stride * 4) + 4];
-    const se23_real_t t34 = p4_7 + dt * p4_4 - pos2 * p0_4 + pos0 * p2_4;
-    const se23_real_t t35 = t31 - t32 * pos2 + t33 * pos0 + t34 * dt + b20_10 * t15 + b20_11 * t16 + b20_12 * t17 + b21_10 * t18 + b21_11 * t19 + b21_12 * t20;
-    S->blk[2][2].m[1][1] = t35;
-    const se23_real_t p7_8 = P[(stride * 7) + 8];
-    const se23_real_t p4_8 = P[(stride * 4) + 8];
-    const se23_real_t p0_8 = P[8];
-    const se23_real_t t36 = p7_8 + dt * p4_8 - pos2 * p0_8 + pos0 * p2_8;
-    const se23_real_t t37 = p1_7 + dt * p1_4 - pos2 * p0_1 + pos0 * p1_2;
-    const se23_real_t p5_7 = P[(stride * 5) + 7];
-    const se23_real_t p4_5 = P[(stride * 4) + 5];
-    const se23_real_t p0_5 = P[5];
-    const se23_real_t t38 = p5_7 + dt * p4_5 - pos2 * p0_5 + pos0 * p2_5;
-    const se23_real_t t39 = t36 + t32 * pos1 - t37 * pos0 + t38 * dt + b20_10 * t24 + b20_11 * t25 + b20_12 * t26 + b21_10 * t27 + b21_11 * t28 + b21_12 * t29;
-    S->blk[2][2].m[1][2] = t39;
-    const se23_real_t p8_8 = P[(stride * 8) + 8];
-    const se23_real_t p5_8 = P[(stride * 5) + 8];
-    const se23_real_t t40 = p8_8 + dt * p5_8 + pos1 * p0_8 - pos0 * p1_8;
-    const se23_real_t t41 = p0_8 + dt * p0_5 + pos1 * p0_0 - pos0 * p0_1;
-    const se23_real_t t42 = p1_8 + dt * p1_5 + pos1 * p0_1 - pos0 * p1_1;
-    const se23_real_t p5_5 = P[(stride * 5) + 5];
-    const se23_real_t t43 = p5_8 + dt * p5_5 + pos1 * p0_5 - pos0 * p1_5;
-    const se23_real_t t44 = t40 + t41 * pos1 - t42 * pos0 + t43 * dt + b20_20 * t24 + b20_21 * t25 + b20_22 * t26 + b21_20 * t27 + b21_21 * t28 + b21_22 * t29;
-    S->blk[2][2].m[2][2] = t44;
-    const se23_real_t vel2 = U->v.v[2];
-    const se23_real_t vel1 = U->v.v[1];
-    const se23_real_t t45 = p3_6 + vel2 * p1_6 - vel1 * p2_6;
-    const se23_real_t t46 = p1_3 + vel2 * p1_1 - vel1 * p1_2;
-    const se23_real_t t47 = p2_3 + vel2 * p1_2 - vel1 * p2_2;
-    const se23_real_t t48 = p3_3 + vel2 * p1_3 - vel1 * p2_3;
-    const se23_real_t b10_00 = Bt->blk[1][0].m[0][0];
-    const se23_real_t b10_01 = Bt->blk[1][0].m[0][1];
-    const se23_real_t b10_02 = Bt->blk[1][0].m[0][2];
-    const se23_real_t b11_00 = Bt->blk[1][1].m[0][0];
-    const se23_real_t b11_01 = Bt->blk[1][1].m[0][1];
-    const se23_real_t b11_02 = Bt->blk[1][1].m[0][2];
-    const se23_real_t t49 = t45 + t46 * pos2 - t47 * pos1 + t48 * dt + b10_00 * t5 + b10_01 * t6 + b10_02 * t7 + b11_00 * t8 + b11_01 * t9 + b11_02 * t10;
-    S->blk[1][2].m[0][0] = t49;
-    const se23_real_t t50 = p3_7 + vel2 * p1_7 - vel1 * p2_7;
-    const se23_real_t t51 = p0_3 + vel2 * p0_1 - vel1 * p0_2;
-    const se23_real_t t52 = p3_4 + vel2 * p1_4 - vel1 * p2_4;
-    const se23_real_t t53 = t50 - t51 * pos2 + t47 * pos0 + t52 * dt + b10_00 * t15 + b10_01 * t16 + b10_02 * t17 + b11_00 * t18 + b11_01 * t19 + b11_02 * t20;
-    S->blk[1][2].m[0][1] = t53;
-    const se23_real_t t54 = p3_8 + vel2 * p1_8 - vel1 * p2_8;
-    const se23_real_t t55 = p3_5 + vel2 * p1_5 - vel1 * p2_5;
-    const se23_real_t t56 = t54 + t51 * pos1 - t46 * pos0 + t55 * dt + b10_00 * t24 + b10_01 * t25 + b10_02 * t26 + b11_00 * t27 + b11_01 * t28 + b11_02 * t29;
-    S->blk[1][2].m[0][2] = t56;
-    const se23_real_t vel0 = U->v.v[0];
-    const se23_real_t t57 = p4_6 - vel2 * p0_6 + vel0 * p2_6;
-    const se23_real_t t58 = p1_4 - vel2 * p0_1 + vel0 * p1_2;
-    const se23_real_t t59 = p2_4 - vel2 * p0_2 + vel0 * p2_2;
-    const se23_real_t t60 = p3_4 - vel2 * p0_3 + vel0 * p2_3;
-    const se23_real_t b10_10 = Bt->blk[1][0].m[1][0];
-    const se23_real_t b10_11 = Bt->blk[1][0].m[1][1];
-    const se23_real_t b10_12 = Bt->blk[1][0].m[1][2];
-    const se23_real_t b11_10 = Bt->blk[1][1].m[1][0];
-    const se23_real_t b11_11 = Bt->blk[1][1].m[1][1];
-    const se23_real_t b11_12 = Bt->blk[1][1].m[1][2];
-    const se23_real_t t61 = t57 + t58 * pos2 - t59 * pos1 + t60 * dt + b10_10 * t5 + b10_11 * t6 + b10_12 * t7 + b11_10 * t8 + b11_11 * t9 + b11_12 * t10;
-    S->blk[1][2].m[1][0] = t61;
-    const se23_real_t t62 = p4_7 - vel2 * p0_7 + vel0 * p2_7;
-    const se23_real_t t63 = p0_4 - vel2 * p0_0 + vel0 * p0_2;
-    const se23_real_t t64 = p4_4 - vel2 * p0_4 + vel0 * p2_4;
-    const se23_real_t t65 = t62 - t63 * pos2 + t59 * pos0 + t64 * dt + b10_10 * t15 + b10_11 * t16 + b10_12 * t17 + b11_10 * t18 + b11_11 * t19 + b11_12 * t20;
-    S->blk[1][2].m[1][1] = t65;
-    const se23_real_t t66 = p4_8 - vel2 * p0_8 + vel0 * p2_8;
-    const se23_real_t t67 = p4_5 - vel2 * p0_5 + vel0 * p2_5;
-    const se23_real_t t68 = t66 + t63 * pos1 - t58 * pos0 + t67 * dt + b10_10 * t24 + b10_11 * t25 + b10_12 * t26 + b11_10 * t27 + b11_11 * t28 + b11_12 * t29;
-    S->blk[1][2].m[1][2] = t68;
-    const se23_real_t t69 = p5_6 + vel1 * p0_6 - vel0 * p1_6;
-    const se23_real_t t70 = p1_5 + vel1 * p0_1 - vel0 * p1_1;
-    const se23_real_t t71 = p2_5 + vel1 * p0_2 - vel0 * p1_2;
-    const se23_real_t t72 = p3_5 + vel1 * p0_3 - vel0 * p1_3;
-    const se23_real_t b10_20 = Bt->blk[1][0].m[2][0];
-    const se23_real_t b10_21 = Bt->blk[1][0].m[2][1];
-    const se23_real_t b10_22 = Bt->blk[1][0].m[2][2];
-    const se23_real_t b11_20 = Bt->blk[1][1].m[2][0];
-    const se23_real_t b11_21 = Bt->blk[1][1].m[2][1];
-    const se23_real_t b11_22 = Bt->blk[1][1].m[2][2];
-    const se23_real_t t73 = t69 + t70 * pos2 - t71 * pos1 + t72 * dt + b10_20 * t5 + b10_21 * t6 + b10_22 * t7 + b11_20 * t8 + b11_21 * t9 + b11_22 * t10;
-    S->blk[1][2].m[2][0] = t73;
-    const se23_real_t t74 = p5_7 + vel1 * p0_7 - vel0 * p1_7;
-    const se23_real_t t75 = p0_5 + vel1 * p0_0 - vel0 * p0_1;
-    const se23_real_t t76 = p4_5 + vel1 * p0_4 - vel0 * p1_4;
-    const se23_real_t t77 = t74 - t75 * pos2 + t71 * pos0 + t76 * dt + b10_20 * t15 + b10_21 * t16 + b10_22 * t17 + b11_20 * t18 + b11_21 * t19 + b11_22 * t20;
-    S->blk[1][2].m[2][1] = t77;
-    const se23_real_t t78 = p5_8 + vel1 * p0_8 - vel0 * p1_8;
-    const se23_real_t t79 = p5_5 + vel1 * p0_5 - vel0 * p1_5;
-    const se23_real_t t80 = t78 + t75 * pos1 - t70 * pos0 + t79 * dt + b10_20 * t24 + b10_21 * t25 + b10_22 * t26 + b11_20 * t27 + b11_21 * t28 + b11_22 * t29;
-    S->blk[1][2].m[2][2] = t80;
-    const se23_real_t t81 = qg * b10_00;
-    const se23_real_t t82 = qg * b10_01;
-    const se23_real_t t83 = qg * b10_02;
-    const se23_real_t t84 = qa * b11_00;
-    const se23_real_t t85 = qa * b11_01;
-    const se23_real_t t86 = qa * b11_02;
-    const se23_real_t t87 = t48 + t46 * vel2 - t47 * vel1 + b10_00 * t81 + b10_01 * t82 + b10_02 * t83 + b11_00 * t84 + b11_01 * t85 + b11_02 * t86;
-    S->blk[1][1].m[0][0] = t87;
-    const se23_real_t t88 = qg * b10_10;
-    const se23_real_t t89 = qg * b10_11;
-    const se23_real_t t90 = qg * b10_12;
-    const se23_real_t t91 = qa * b11_10;
-    const se23_real_t t92 = qa * b11_11;
-    const se23_real_t t93 = qa * b11_12;
-    const se23_real_t t94 = t52 - t51 * vel2 + t47 * vel0 + b10_00 * t88 + b10_01 * t89 + b10_02 * t90 + b11_00 * t91 + b11_01 * t92 + b11_02 * t93;
-    S->blk[1][1].m[0][1] = t94;
-    const se23_real_t t95 = qg * b10_20;
-    const se23_real_t t96 = qg * b10_21;
-    const se23_real_t t97 = qg * b10_22;
-    const se23_real_t t98 = qa * b11_20;
-    const se23_real_t t99 = qa * b11_21;
-    const se23_real_t t100 = qa * b11_22;
-    const se23_real_t t101 = t55 + t51 * vel1 - t46 * vel0 + b10_00 * t95 + b10_01 * t96 + b10_02 * t97 + b11_00 * t98 + b11_01 * t99 + b11_02 * t100;
-    S->blk[1][1].m[0][2] = t101;
-    const se23_real_t t102 = t64 - t63 * vel2 + t59 * vel0 + b10_10 * t88 + b10_11 * t89 + b10_12 * t90 + b11_10 * t91 + b11_11 * t92 + b11_12 * t93;
-    S->blk[1][1].m[1][1] = t102;
-    const se23_real_t t103 = t67 + t63 * vel1 - t58 * vel0 + b10_10 * t95 + b10_11 * t96 + b10_12 * t97 + b11_10 * t98 + b11_11 * t99 + b11_12 * t100;
-    S->blk[1][1].m[1][2] = t103;
-    const se23_real_t t104 = t79 + t75 * vel1 - t70 * vel0 + b10_20 * t95 + b10_21 * t96 + b10_22 * t97 + b11_20 * t98 + b11_21 * t99 + b11_22 * t100;
-    S->blk[1][1].m[2][2] = t104;
     const se23_real_t b00_00 = Bt->blk[0][0].m[0][0];
+    const se23_real_t t1 = qg * b00_00;
     const se23_real_t b00_01 = Bt->blk[0][0].m[0][1];
+    const se23_real_t t2 = qg * b00_01;
     const se23_real_t b00_02 = Bt->blk[0][0].m[0][2];
-    const se23_real_t t105 = p0_6 + p0_1 * pos2 - p0_2 * pos1 + p0_3 * dt + b00_00 * t5 + b00_01 * t6 + b00_02 * t7;
-    S->blk[0][2].m[0][0] = t105;
-    const se23_real_t t106 = p0_7 - p0_0 * pos2 + p0_2 * pos0 + p0_4 * dt + b00_00 * t15 + b00_01 * t16 + b00_02 * t17;
-    S->blk[0][2].m[0][1] = t106;
-    const se23_real_t t107 = p0_8 + p0_0 * pos1 - p0_1 * pos0 + p0_5 * dt + b00_00 * t24 + b00_01 * t25 + b00_02 * t26;
-    S->blk[0][2].m[0][2] = t107;
+    const se23_real_t t3 = qg * b00_02;
+    const se23_real_t t4 = b00_00 * t1 + b00_01 * t2 + b00_02 * t3;
+    S->blk[0][0].m[0][0] = t4;
     const se23_real_t b00_10 = Bt->blk[0][0].m[1][0];
+    const se23_real_t t5 = qg * b00_10;
     const se23_real_t b00_11 = Bt->blk[0][0].m[1][1];
+    const se23_real_t t6 = qg * b00_11;
     const se23_real_t b00_12 = Bt->blk[0][0].m[1][2];
-    const se23_real_t t108 = p1_6 + p1_1 * pos2 - p1_2 * pos1 + p1_3 * dt + b00_10 * t5 + b00_11 * t6 + b00_12 * t7;
-    S->blk[0][2].m[1][0] = t108;
-    const se23_real_t t109 = p1_7 - p0_1 * pos2 + p1_2 * pos0 + p1_4 * dt + b00_10 * t15 + b00_11 * t16 + b00_12 * t17;
-    S->blk[0][2].m[1][1] = t109;
-    const se23_real_t t110 = p1_8 + p0_1 * pos1 - p1_1 * pos0 + p1_5 * dt + b00_10 * t24 + b00_11 * t25 + b00_12 * t26;
-    S->blk[0][2].m[1][2] = t110;
+    const se23_real_t t7 = qg * b00_12;
+    const se23_real_t t8 = b00_00 * t5 + b00_01 * t6 + b00_02 * t7;
+    S->blk[0][0].m[0][1] = t8;
     const se23_real_t b00_20 = Bt->blk[0][0].m[2][0];
+    const se23_real_t t9 = qg * b00_20;
     const se23_real_t b00_21 = Bt->blk[0][0].m[2][1];
+    const se23_real_t t10 = qg * b00_21;
     const se23_real_t b00_22 = Bt->blk[0][0].m[2][2];
-    const se23_real_t t111 = p2_6 + p1_2 * pos2 - p2_2 * pos1 + p2_3 * dt + b00_20 * t5 + b00_21 * t6 + b00_22 * t7;
-    S->blk[0][2].m[2][0] = t111;
-    const se23_real_t t112 = p2_7 - p0_2 * pos2 + p2_2 * pos0 + p2_4 * dt + b00_20 * t15 + b00_21 * t16 + b00_22 * t17;
-    S->blk[0][2].m[2][1] = t112;
-    const se23_real_t t113 = p2_8 + p0_2 * pos1 - p1_2 * pos0 + p2_5 * dt + b00_20 * t24 + b00_21 * t25 + b00_22 * t26;
-    S->blk[0][2].m[2][2] = t113;
-    const se23_real_t t114 = p0_3 + p0_1 * vel2 - p0_2 * vel1 + b00_00 * t81 + b00_01 * t82 + b00_02 * t83;
-    S->blk[0][1].m[0][0] = t114;
-    const se23_real_t t115 = p0_4 - p0_0 * vel2 + p0_2 * vel0 + b00_00 * t88 + b00_01 * t89 + b00_02 * t90;
-    S->blk[0][1].m[0][1] = t115;
-    const se23_real_t t116 = p0_5 + p0_0 * vel1 - p0_1 * vel0 + b00_00 * t95 + b00_01 * t96 + b00_02 * t97;
-    S->blk[0][1].m[0][2] = t116;
-    const se23_real_t t117 = p1_3 + p1_1 * vel2 - p1_2 * vel1 + b00_10 * t81 + b00_11 * t82 + b00_12 * t83;
-    S->blk[0][1].m[1][0] = t117;
-    const se23_real_t t118 = p1_4 - p0_1 * vel2 + p1_2 * vel0 + b00_10 * t88 + b00_11 * t89 + b00_12 * t90;
-    S->blk[0][1].m[1][1] = t118;
-    const se23_real_t t119 = p1_5 + p0_1 * vel1 - p1_1 * vel0 + b00_10 * t95 + b00_11 * t96 + b00_12 * t97;
-    S->blk[0][1].m[1][2] = t119;
-    const se23_real_t t120 = p2_3 + p1_2 * vel2 - p2_2 * vel1 + b00_20 * t81 + b00_21 * t82 + b00_22 * t83;
-    S->blk[0][1].m[2][0] = t120;
-    const se23_real_t t121 = p2_4 - p0_2 * vel2 + p2_2 * vel0 + b00_20 * t88 + b00_21 * t89 + b00_22 * t90;
-    S->blk[0][1].m[2][1] = t121;
-    const se23_real_t t122 = p2_5 + p0_2 * vel1 - p1_2 * vel0 + b00_20 * t95 + b00_21 * t96 + b00_22 * t97;
-    S->blk[0][1].m[2][2] = t122;
-    const se23_real_t t123 = qg * b00_00;
-    const se23_real_t t124 = qg * b00_01;
-    const se23_real_t t125 = qg * b00_02;
-    const se23_real_t t126 = p0_0 + b00_00 * t123 + b00_01 * t124 + b00_02 * t125;
-    S->blk[0][0].m[0][0] = t126;
-    const se23_real_t t127 = qg * b00_10;
-    const se23_real_t t128 = qg * b00_11;
-    const se23_real_t t129 = qg * b00_12;
-    const se23_real_t t130 = p0_1 + b00_00 * t127 + b00_01 * t128 + b00_02 * t129;
-    S->blk[0][0].m[0][1] = t130;
-    const se23_real_t t131 = qg * b00_20;
-    const se23_real_t t132 = qg * b00_21;
-    const se23_real_t t133 = qg * b00_22;
-    const se23_real_t t134 = p0_2 + b00_00 * t131 + b00_01 * t132 + b00_02 * t133;
-    S->blk[0][0].m[0][2] = t134;
-    const se23_real_t t135 = p1_1 + b00_10 * t127 + b00_11 * t128 + b00_12 * t129;
-    S->blk[0][0].m[1][1] = t135;
-    const se23_real_t t136 = p1_2 + b00_10 * t131 + b00_11 * t132 + b00_12 * t133;
-    S->blk[0][0].m[1][2] = t136;
-    const se23_real_t t137 = p2_2 + b00_20 * t131 + b00_21 * t132 + b00_22 * t133;
-    S->blk[0][0].m[2][2] = t137;
+    const se23_real_t t11 = qg * b00_22;
+    const se23_real_t t12 = b00_00 * t9 + b00_01 * t10 + b00_02 * t11;
+    S->blk[0][0].m[0][2] = t12;
+    const se23_real_t t13 = b00_10 * t5 + b00_11 * t6 + b00_12 * t7;
+    S->blk[0][0].m[1][1] = t13;
+    const se23_real_t t14 = b00_10 * t9 + b00_11 * t10 + b00_12 * t11;
+    S->blk[0][0].m[1][2] = t14;
+    const se23_real_t t15 = b00_20 * t9 + b00_21 * t10 + b00_22 * t11;
+    S->blk[0][0].m[2][2] = t15;
+    const se23_real_t b10_00 = Bt->blk[1][0].m[0][0];
+    const se23_real_t t16 = qg * b10_00;
+    const se23_real_t b10_01 = Bt->blk[1][0].m[0][1];
+    const se23_real_t t17 = qg * b10_01;
+    const se23_real_t b10_02 = Bt->blk[1][0].m[0][2];
+    const se23_real_t t18 = qg * b10_02;
+    const se23_real_t t19 = b00_00 * t16 + b00_01 * t17 + b00_02 * t18;
+    S->blk[0][1].m[0][0] = t19;
+    const se23_real_t b10_10 = Bt->blk[1][0].m[1][0];
+    const se23_real_t t20 = qg * b10_10;
+    const se23_real_t b10_11 = Bt->blk[1][0].m[1][1];
+    const se23_real_t t21 = qg * b10_11;
+    const se23_real_t b10_12 = Bt->blk[1][0].m[1][2];
+    const se23_real_t t22 = qg * b10_12;
+    const se23_real_t t23 = b00_00 * t20 + b00_01 * t21 + b00_02 * t22;
+    S->blk[0][1].m[0][1] = t23;
+    const se23_real_t b10_20 = Bt->blk[1][0].m[2][0];
+    const se23_real_t t24 = qg * b10_20;
+    const se23_real_t b10_21 = Bt->blk[1][0].m[2][1];
+    const se23_real_t t25 = qg * b10_21;
+    const se23_real_t b10_22 = Bt->blk[1][0].m[2][2];
+    const se23_real_t t26 = qg * b10_22;
+    const se23_real_t t27 = b00_00 * t24 + b00_01 * t25 + b00_02 * t26;
+    S->blk[0][1].m[0][2] = t27;
+    const se23_real_t t28 = b00_10 * t16 + b00_11 * t17 + b00_12 * t18;
+    S->blk[0][1].m[1][0] = t28;
+    const se23_real_t t29 = b00_10 * t20 + b00_11 * t21 + b00_12 * t22;
+    S->blk[0][1].m[1][1] = t29;
+    const se23_real_t t30 = b00_10 * t24 + b00_11 * t25 + b00_12 * t26;
+    S->blk[0][1].m[1][2] = t30;
+    const se23_real_t t31 = b00_20 * t16 + b00_21 * t17 + b00_22 * t18;
+    S->blk[0][1].m[2][0] = t31;
+    const se23_real_t t32 = b00_20 * t20 + b00_21 * t21 + b00_22 * t22;
+    S->blk[0][1].m[2][1] = t32;
+    const se23_real_t t33 = b00_20 * t24 + b00_21 * t25 + b00_22 * t26;
+    S->blk[0][1].m[2][2] = t33;
+    const se23_real_t b20_00 = Bt->blk[2][0].m[0][0];
+    const se23_real_t t34 = qg * b20_00;
+    const se23_real_t b20_01 = Bt->blk[2][0].m[0][1];
+    const se23_real_t t35 = qg * b20_01;
+    const se23_real_t b20_02 = Bt->blk[2][0].m[0][2];
+    const se23_real_t t36 = qg * b20_02;
+    const se23_real_t t37 = b00_00 * t34 + b00_01 * t35 + b00_02 * t36;
+    S->blk[0][2].m[0][0] = t37;
+    const se23_real_t b20_10 = Bt->blk[2][0].m[1][0];
+    const se23_real_t t38 = qg * b20_10;
+    const se23_real_t b20_11 = Bt->blk[2][0].m[1][1];
+    const se23_real_t t39 = qg * b20_11;
+    const se23_real_t b20_12 = Bt->blk[2][0].m[1][2];
+    const se23_real_t t40 = qg * b20_12;
+    const se23_real_t t41 = b00_00 * t38 + b00_01 * t39 + b00_02 * t40;
+    S->blk[0][2].m[0][1] = t41;
+    const se23_real_t b20_20 = Bt->blk[2][0].m[2][0];
+    const se23_real_t t42 = qg * b20_20;
+    const se23_real_t b20_21 = Bt->blk[2][0].m[2][1];
+    const se23_real_t t43 = qg * b20_21;
+    const se23_real_t b20_22 = Bt->blk[2][0].m[2][2];
+    const se23_real_t t44 = qg * b20_22;
+    const se23_real_t t45 = b00_00 * t42 + b00_01 * t43 + b00_02 * t44;
+    S->blk[0][2].m[0][2] = t45;
+    const se23_real_t t46 = b00_10 * t34 + b00_11 * t35 + b00_12 * t36;
+    S->blk[0][2].m[1][0] = t46;
+    const se23_real_t t47 = b00_10 * t38 + b00_11 * t39 + b00_12 * t40;
+    S->blk[0][2].m[1][1] = t47;
+    const se23_real_t t48 = b00_10 * t42 + b00_11 * t43 + b00_12 * t44;
+    S->blk[0][2].m[1][2] = t48;
+    const se23_real_t t49 = b00_20 * t34 + b00_21 * t35 + b00_22 * t36;
+    S->blk[0][2].m[2][0] = t49;
+    const se23_real_t t50 = b00_20 * t38 + b00_21 * t39 + b00_22 * t40;
+    S->blk[0][2].m[2][1] = t50;
+    const se23_real_t t51 = b00_20 * t42 + b00_21 * t43 + b00_22 * t44;
+    S->blk[0][2].m[2][2] = t51;
+    const se23_real_t qa = q->qa;
+    const se23_real_t b11_00 = Bt->blk[1][1].m[0][0];
+    const se23_real_t t52 = qa * b11_00;
+    const se23_real_t b11_01 = Bt->blk[1][1].m[0][1];
+    const se23_real_t t53 = qa * b11_01;
+    const se23_real_t b11_02 = Bt->blk[1][1].m[0][2];
+    const se23_real_t t54 = qa * b11_02;
+    const se23_real_t t55 = b10_00 * t16 + b10_01 * t17 + b10_02 * t18 + b11_00 * t52
+                            + b11_01 * t53 + b11_02 * t54;
+    S->blk[1][1].m[0][0] = t55;
+    const se23_real_t b11_10 = Bt->blk[1][1].m[1][0];
+    const se23_real_t t56 = qa * b11_10;
+    const se23_real_t b11_11 = Bt->blk[1][1].m[1][1];
+    const se23_real_t t57 = qa * b11_11;
+    const se23_real_t b11_12 = Bt->blk[1][1].m[1][2];
+    const se23_real_t t58 = qa * b11_12;
+    const se23_real_t t59 = b10_00 * t20 + b10_01 * t21 + b10_02 * t22 + b11_00 * t56
+                            + b11_01 * t57 + b11_02 * t58;
+    S->blk[1][1].m[0][1] = t59;
+    const se23_real_t b11_20 = Bt->blk[1][1].m[2][0];
+    const se23_real_t t60 = qa * b11_20;
+    const se23_real_t b11_21 = Bt->blk[1][1].m[2][1];
+    const se23_real_t t61 = qa * b11_21;
+    const se23_real_t b11_22 = Bt->blk[1][1].m[2][2];
+    const se23_real_t t62 = qa * b11_22;
+    const se23_real_t t63 = b10_00 * t24 + b10_01 * t25 + b10_02 * t26 + b11_00 * t60
+                            + b11_01 * t61 + b11_02 * t62;
+    S->blk[1][1].m[0][2] = t63;
+    const se23_real_t t64 = b10_10 * t20 + b10_11 * t21 + b10_12 * t22 + b11_10 * t56
+                            + b11_11 * t57 + b11_12 * t58;
+    S->blk[1][1].m[1][1] = t64;
+    const se23_real_t t65 = b10_10 * t24 + b10_11 * t25 + b10_12 * t26 + b11_10 * t60
+                            + b11_11 * t61 + b11_12 * t62;
+    S->blk[1][1].m[1][2] = t65;
+    const se23_real_t t66 = b10_20 * t24 + b10_21 * t25 + b10_22 * t26 + b11_20 * t60
+                            + b11_21 * t61 + b11_22 * t62;
+    S->blk[1][1].m[2][2] = t66;
+    const se23_real_t b21_00 = Bt->blk[2][1].m[0][0];
+    const se23_real_t t67 = qa * b21_00;
+    const se23_real_t b21_01 = Bt->blk[2][1].m[0][1];
+    const se23_real_t t68 = qa * b21_01;
+    const se23_real_t b21_02 = Bt->blk[2][1].m[0][2];
+    const se23_real_t t69 = qa * b21_02;
+    const se23_real_t t70 = b10_00 * t34 + b10_01 * t35 + b10_02 * t36 + b11_00 * t67
+                            + b11_01 * t68 + b11_02 * t69;
+    S->blk[1][2].m[0][0] = t70;
+    const se23_real_t b21_10 = Bt->blk[2][1].m[1][0];
+    const se23_real_t t71 = qa * b21_10;
+    const se23_real_t b21_11 = Bt->blk[2][1].m[1][1];
+    const se23_real_t t72 = qa * b21_11;
+    const se23_real_t b21_12 = Bt->blk[2][1].m[1][2];
+    const se23_real_t t73 = qa * b21_12;
+    const se23_real_t t74 = b10_00 * t38 + b10_01 * t39 + b10_02 * t40 + b11_00 * t71
+                            + b11_01 * t72 + b11_02 * t73;
+    S->blk[1][2].m[0][1] = t74;
+    const se23_real_t b21_20 = Bt->blk[2][1].m[2][0];
+    const se23_real_t t75 = qa * b21_20;
+    const se23_real_t b21_21 = Bt->blk[2][1].m[2][1];
+    const se23_real_t t76 = qa * b21_21;
+    const se23_real_t b21_22 = Bt->blk[2][1].m[2][2];
+    const se23_real_t t77 = qa * b21_22;
+    const se23_real_t t78 = b10_00 * t42 + b10_01 * t43 + b10_02 * t44 + b11_00 * t75
+                            + b11_01 * t76 + b11_02 * t77;
+    S->blk[1][2].m[0][2] = t78;
+    const se23_real_t t79 = b10_10 * t34 + b10_11 * t35 + b10_12 * t36 + b11_10 * t67
+                            + b11_11 * t68 + b11_12 * t69;
+    S->blk[1][2].m[1][0] = t79;
+    const se23_real_t t80 = b10_10 * t38 + b10_11 * t39 + b10_12 * t40 + b11_10 * t71
+                            + b11_11 * t72 + b11_12 * t73;
+    S->blk[1][2].m[1][1] = t80;
+    const se23_real_t t81 = b10_10 * t42 + b10_11 * t43 + b10_12 * t44 + b11_10 * t75
+                            + b11_11 * t76 + b11_12 * t77;
+    S->blk[1][2].m[1][2] = t81;
+    const se23_real_t t82 = b10_20 * t34 + b10_21 * t35 + b10_22 * t36 + b11_20 * t67
+                            + b11_21 * t68 + b11_22 * t69;
+    S->blk[1][2].m[2][0] = t82;
+    const se23_real_t t83 = b10_20 * t38 + b10_21 * t39 + b10_22 * t40 + b11_20 * t71
+                            + b11_21 * t72 + b11_22 * t73;
+    S->blk[1][2].m[2][1] = t83;
+    const se23_real_t t84 = b10_20 * t42 + b10_21 * t43 + b10_22 * t44 + b11_20 * t75
+                            + b11_21 * t76 + b11_22 * t77;
+    S->blk[1][2].m[2][2] = t84;
+    const se23_real_t t85 = b20_00 * t34 + b20_01 * t35 + b20_02 * t36 + b21_00 * t67
+                            + b21_01 * t68 + b21_02 * t69;
+    S->blk[2][2].m[0][0] = t85;
+    const se23_real_t t86 = b20_00 * t38 + b20_01 * t39 + b20_02 * t40 + b21_00 * t71
+                            + b21_01 * t72 + b21_02 * t73;
+    S->blk[2][2].m[0][1] = t86;
+    const se23_real_t t87 = b20_00 * t42 + b20_01 * t43 + b20_02 * t44 + b21_00 * t75
+                            + b21_01 * t76 + b21_02 * t77;
+    S->blk[2][2].m[0][2] = t87;
+    const se23_real_t t88 = b20_10 * t38 + b20_11 * t39 + b20_12 * t40 + b21_10 * t71
+                            + b21_11 * t72 + b21_12 * t73;
+    S->blk[2][2].m[1][1] = t88;
+    const se23_real_t t89 = b20_10 * t42 + b20_11 * t43 + b20_12 * t44 + b21_10 * t75
+                            + b21_11 * t76 + b21_12 * t77;
+    S->blk[2][2].m[1][2] = t89;
+    const se23_real_t t90 = b20_20 * t42 + b20_21 * t43 + b20_22 * t44 + b21_20 * t75
+                            + b21_21 * t76 + b21_22 * t77;
+    S->blk[2][2].m[2][2] = t90;
 }
 
 /* 15 states, first stage: the gyro-bias cross blocks, S = E's gyro terms:
@@ -386,7 +307,8 @@ void se23_cov_step15_gyro(const se23_pose_t *U, se23_real_t dt, const se23_input
     const se23_real_t b11_00 = Bt->blk[1][1].m[0][0];
     const se23_real_t b11_01 = Bt->blk[1][1].m[0][1];
     const se23_real_t b11_02 = Bt->blk[1][1].m[0][2];
-    const se23_real_t t20 = t19 + b10_00 * p9_9 + b10_01 * p9_10 + b10_02 * p9_11 + b11_00 * p9_12 + b11_01 * p9_13 + b11_02 * p9_14;
+    const se23_real_t t20 = t19 + b10_00 * p9_9 + b10_01 * p9_10 + b10_02 * p9_11
+                            + b11_00 * p9_12 + b11_01 * p9_13 + b11_02 * p9_14;
     const se23_real_t p4_9 = P[(stride * 4) + 9];
     const se23_real_t vel0 = U->v.v[0];
     const se23_real_t t21 = p4_9 - vel2 * p0_9 + vel0 * p2_9;
@@ -396,7 +318,8 @@ void se23_cov_step15_gyro(const se23_pose_t *U, se23_real_t dt, const se23_input
     const se23_real_t b11_10 = Bt->blk[1][1].m[1][0];
     const se23_real_t b11_11 = Bt->blk[1][1].m[1][1];
     const se23_real_t b11_12 = Bt->blk[1][1].m[1][2];
-    const se23_real_t t22 = t21 + b10_10 * p9_9 + b10_11 * p9_10 + b10_12 * p9_11 + b11_10 * p9_12 + b11_11 * p9_13 + b11_12 * p9_14;
+    const se23_real_t t22 = t21 + b10_10 * p9_9 + b10_11 * p9_10 + b10_12 * p9_11
+                            + b11_10 * p9_12 + b11_11 * p9_13 + b11_12 * p9_14;
     const se23_real_t p5_9 = P[(stride * 5) + 9];
     const se23_real_t t23 = p5_9 + vel1 * p0_9 - vel0 * p1_9;
     const se23_real_t b10_20 = Bt->blk[1][0].m[2][0];
@@ -405,7 +328,8 @@ void se23_cov_step15_gyro(const se23_pose_t *U, se23_real_t dt, const se23_input
     const se23_real_t b11_20 = Bt->blk[1][1].m[2][0];
     const se23_real_t b11_21 = Bt->blk[1][1].m[2][1];
     const se23_real_t b11_22 = Bt->blk[1][1].m[2][2];
-    const se23_real_t t24 = t23 + b10_20 * p9_9 + b10_21 * p9_10 + b10_22 * p9_11 + b11_20 * p9_12 + b11_21 * p9_13 + b11_22 * p9_14;
+    const se23_real_t t24 = t23 + b10_20 * p9_9 + b10_21 * p9_10 + b10_22 * p9_11
+                            + b11_20 * p9_12 + b11_21 * p9_13 + b11_22 * p9_14;
     const se23_real_t t25 = r00 * t20 + r10 * t22 + r20 * t24;
     const se23_real_t p3_10 = P[(stride * 3) + 10];
     const se23_real_t t26 = p3_10 + vel2 * p1_10 - vel1 * p2_10;
@@ -414,13 +338,16 @@ void se23_cov_step15_gyro(const se23_pose_t *U, se23_real_t dt, const se23_input
     const se23_real_t p10_12 = P[(stride * 10) + 12];
     const se23_real_t p10_13 = P[(stride * 10) + 13];
     const se23_real_t p10_14 = P[(stride * 10) + 14];
-    const se23_real_t t27 = t26 + b10_00 * p9_10 + b10_01 * p10_10 + b10_02 * p10_11 + b11_00 * p10_12 + b11_01 * p10_13 + b11_02 * p10_14;
+    const se23_real_t t27 = t26 + b10_00 * p9_10 + b10_01 * p10_10 + b10_02 * p10_11
+                            + b11_00 * p10_12 + b11_01 * p10_13 + b11_02 * p10_14;
     const se23_real_t p4_10 = P[(stride * 4) + 10];
     const se23_real_t t28 = p4_10 - vel2 * p0_10 + vel0 * p2_10;
-    const se23_real_t t29 = t28 + b10_10 * p9_10 + b10_11 * p10_10 + b10_12 * p10_11 + b11_10 * p10_12 + b11_11 * p10_13 + b11_12 * p10_14;
+    const se23_real_t t29 = t28 + b10_10 * p9_10 + b10_11 * p10_10 + b10_12 * p10_11
+                            + b11_10 * p10_12 + b11_11 * p10_13 + b11_12 * p10_14;
     const se23_real_t p5_10 = P[(stride * 5) + 10];
     const se23_real_t t30 = p5_10 + vel1 * p0_10 - vel0 * p1_10;
-    const se23_real_t t31 = t30 + b10_20 * p9_10 + b10_21 * p10_10 + b10_22 * p10_11 + b11_20 * p10_12 + b11_21 * p10_13 + b11_22 * p10_14;
+    const se23_real_t t31 = t30 + b10_20 * p9_10 + b10_21 * p10_10 + b10_22 * p10_11
+                            + b11_20 * p10_12 + b11_21 * p10_13 + b11_22 * p10_14;
     const se23_real_t t32 = r00 * t27 + r10 * t29 + r20 * t31;
     const se23_real_t p3_11 = P[(stride * 3) + 11];
     const se23_real_t t33 = p3_11 + vel2 * p1_11 - vel1 * p2_11;
@@ -429,13 +356,16 @@ void se23_cov_step15_gyro(const se23_pose_t *U, se23_real_t dt, const se23_input
     const se23_real_t p11_12 = P[(stride * 11) + 12];
     const se23_real_t p11_13 = P[(stride * 11) + 13];
     const se23_real_t p11_14 = P[(stride * 11) + 14];
-    const se23_real_t t34 = t33 + b10_00 * p9_11 + b10_01 * p10_11 + b10_02 * p11_11 + b11_00 * p11_12 + b11_01 * p11_13 + b11_02 * p11_14;
+    const se23_real_t t34 = t33 + b10_00 * p9_11 + b10_01 * p10_11 + b10_02 * p11_11
+                            + b11_00 * p11_12 + b11_01 * p11_13 + b11_02 * p11_14;
     const se23_real_t p4_11 = P[(stride * 4) + 11];
     const se23_real_t t35 = p4_11 - vel2 * p0_11 + vel0 * p2_11;
-    const se23_real_t t36 = t35 + b10_10 * p9_11 + b10_11 * p10_11 + b10_12 * p11_11 + b11_10 * p11_12 + b11_11 * p11_13 + b11_12 * p11_14;
+    const se23_real_t t36 = t35 + b10_10 * p9_11 + b10_11 * p10_11 + b10_12 * p11_11
+                            + b11_10 * p11_12 + b11_11 * p11_13 + b11_12 * p11_14;
     const se23_real_t p5_11 = P[(stride * 5) + 11];
     const se23_real_t t37 = p5_11 + vel1 * p0_11 - vel0 * p1_11;
-    const se23_real_t t38 = t37 + b10_20 * p9_11 + b10_21 * p10_11 + b10_22 * p11_11 + b11_20 * p11_12 + b11_21 * p11_13 + b11_22 * p11_14;
+    const se23_real_t t38 = t37 + b10_20 * p9_11 + b10_21 * p10_11 + b10_22 * p11_11
+                            + b11_20 * p11_12 + b11_21 * p11_13 + b11_22 * p11_14;
     const se23_real_t t39 = r00 * t34 + r10 * t36 + r20 * t38;
     const se23_real_t t40 = r01 * t20 + r11 * t22 + r21 * t24;
     out[(stride * 3) + 11] = t39;
@@ -467,7 +397,8 @@ void se23_cov_step15_gyro(const se23_pose_t *U, se23_real_t dt, const se23_input
     const se23_real_t b21_00 = Bt->blk[2][1].m[0][0];
     const se23_real_t b21_01 = Bt->blk[2][1].m[0][1];
     const se23_real_t b21_02 = Bt->blk[2][1].m[0][2];
-    const se23_real_t t47 = t46 + b20_00 * p9_9 + b20_01 * p9_10 + b20_02 * p9_11 + b21_00 * p9_12 + b21_01 * p9_13 + b21_02 * p9_14;
+    const se23_real_t t47 = t46 + b20_00 * p9_9 + b20_01 * p9_10 + b20_02 * p9_11
+                            + b21_00 * p9_12 + b21_01 * p9_13 + b21_02 * p9_14;
     const se23_real_t p7_9 = P[(stride * 7) + 9];
     const se23_real_t pos0 = U->p.v[0];
     const se23_real_t t48 = p7_9 + dt * p4_9 - pos2 * p0_9 + pos0 * p2_9;
@@ -477,7 +408,8 @@ void se23_cov_step15_gyro(const se23_pose_t *U, se23_real_t dt, const se23_input
     const se23_real_t b21_10 = Bt->blk[2][1].m[1][0];
     const se23_real_t b21_11 = Bt->blk[2][1].m[1][1];
     const se23_real_t b21_12 = Bt->blk[2][1].m[1][2];
-    const se23_real_t t49 = t48 + b20_10 * p9_9 + b20_11 * p9_10 + b20_12 * p9_11 + b21_10 * p9_12 + b21_11 * p9_13 + b21_12 * p9_14;
+    const se23_real_t t49 = t48 + b20_10 * p9_9 + b20_11 * p9_10 + b20_12 * p9_11
+                            + b21_10 * p9_12 + b21_11 * p9_13 + b21_12 * p9_14;
     const se23_real_t p8_9 = P[(stride * 8) + 9];
     const se23_real_t t50 = p8_9 + dt * p5_9 + pos1 * p0_9 - pos0 * p1_9;
     const se23_real_t b20_20 = Bt->blk[2][0].m[2][0];
@@ -486,31 +418,38 @@ void se23_cov_step15_gyro(const se23_pose_t *U, se23_real_t dt, const se23_input
     const se23_real_t b21_20 = Bt->blk[2][1].m[2][0];
     const se23_real_t b21_21 = Bt->blk[2][1].m[2][1];
     const se23_real_t b21_22 = Bt->blk[2][1].m[2][2];
-    const se23_real_t t51 = t50 + b20_20 * p9_9 + b20_21 * p9_10 + b20_22 * p9_11 + b21_20 * p9_12 + b21_21 * p9_13 + b21_22 * p9_14;
+    const se23_real_t t51 = t50 + b20_20 * p9_9 + b20_21 * p9_10 + b20_22 * p9_11
+                            + b21_20 * p9_12 + b21_21 * p9_13 + b21_22 * p9_14;
     const se23_real_t t52 = r00 * t47 + r10 * t49 + r20 * t51;
     const se23_real_t p6_10 = P[(stride * 6) + 10];
     const se23_real_t t53 = p6_10 + dt * p3_10 + pos2 * p1_10 - pos1 * p2_10;
     out[(stride * 6) + 9] = t52;
     out[(stride * 9) + 6] = t52;
-    const se23_real_t t54 = t53 + b20_00 * p9_10 + b20_01 * p10_10 + b20_02 * p10_11 + b21_00 * p10_12 + b21_01 * p10_13 + b21_02 * p10_14;
+    const se23_real_t t54 = t53 + b20_00 * p9_10 + b20_01 * p10_10 + b20_02 * p10_11
+                            + b21_00 * p10_12 + b21_01 * p10_13 + b21_02 * p10_14;
     const se23_real_t p7_10 = P[(stride * 7) + 10];
     const se23_real_t t55 = p7_10 + dt * p4_10 - pos2 * p0_10 + pos0 * p2_10;
-    const se23_real_t t56 = t55 + b20_10 * p9_10 + b20_11 * p10_10 + b20_12 * p10_11 + b21_10 * p10_12 + b21_11 * p10_13 + b21_12 * p10_14;
+    const se23_real_t t56 = t55 + b20_10 * p9_10 + b20_11 * p10_10 + b20_12 * p10_11
+                            + b21_10 * p10_12 + b21_11 * p10_13 + b21_12 * p10_14;
     const se23_real_t p8_10 = P[(stride * 8) + 10];
     const se23_real_t t57 = p8_10 + dt * p5_10 + pos1 * p0_10 - pos0 * p1_10;
-    const se23_real_t t58 = t57 + b20_20 * p9_10 + b20_21 * p10_10 + b20_22 * p10_11 + b21_20 * p10_12 + b21_21 * p10_13 + b21_22 * p10_14;
+    const se23_real_t t58 = t57 + b20_20 * p9_10 + b20_21 * p10_10 + b20_22 * p10_11
+                            + b21_20 * p10_12 + b21_21 * p10_13 + b21_22 * p10_14;
     const se23_real_t t59 = r00 * t54 + r10 * t56 + r20 * t58;
     const se23_real_t p6_11 = P[(stride * 6) + 11];
     const se23_real_t t60 = p6_11 + dt * p3_11 + pos2 * p1_11 - pos1 * p2_11;
     out[(stride * 6) + 10] = t59;
     out[(stride * 10) + 6] = t59;
-    const se23_real_t t61 = t60 + b20_00 * p9_11 + b20_01 * p10_11 + b20_02 * p11_11 + b21_00 * p11_12 + b21_01 * p11_13 + b21_02 * p11_14;
+    const se23_real_t t61 = t60 + b20_00 * p9_11 + b20_01 * p10_11 + b20_02 * p11_11
+                            + b21_00 * p11_12 + b21_01 * p11_13 + b21_02 * p11_14;
     const se23_real_t p7_11 = P[(stride * 7) + 11];
     const se23_real_t t62 = p7_11 + dt * p4_11 - pos2 * p0_11 + pos0 * p2_11;
-    const se23_real_t t63 = t62 + b20_10 * p9_11 + b20_11 * p10_11 + b20_12 * p11_11 + b21_10 * p11_12 + b21_11 * p11_13 + b21_12 * p11_14;
+    const se23_real_t t63 = t62 + b20_10 * p9_11 + b20_11 * p10_11 + b20_12 * p11_11
+                            + b21_10 * p11_12 + b21_11 * p11_13 + b21_12 * p11_14;
     const se23_real_t p8_11 = P[(stride * 8) + 11];
     const se23_real_t t64 = p8_11 + dt * p5_11 + pos1 * p0_11 - pos0 * p1_11;
-    const se23_real_t t65 = t64 + b20_20 * p9_11 + b20_21 * p10_11 + b20_22 * p11_11 + b21_20 * p11_12 + b21_21 * p11_13 + b21_22 * p11_14;
+    const se23_real_t t65 = t64 + b20_20 * p9_11 + b20_21 * p10_11 + b20_22 * p11_11
+                            + b21_20 * p11_12 + b21_21 * p11_13 + b21_22 * p11_14;
     const se23_real_t t66 = r00 * t61 + r10 * t63 + r20 * t65;
     const se23_real_t t67 = r01 * t47 + r11 * t49 + r21 * t51;
     out[(stride * 6) + 11] = t66;
@@ -536,119 +475,164 @@ void se23_cov_step15_gyro(const se23_pose_t *U, se23_real_t dt, const se23_input
     const se23_real_t t73 = t1 + qg * b00_00;
     const se23_real_t t74 = t5 + qg * b00_01;
     const se23_real_t t75 = t9 + qg * b00_02;
-    const se23_real_t t76 = b00_00 * t73 + b00_01 * t74 + b00_02 * t75 + p0_9 * b00_00 + p0_10 * b00_01 + p0_11 * b00_02;
+    const se23_real_t t76 = b00_00 * t73 + b00_01 * t74 + b00_02 * t75 + p0_9 * b00_00
+                            + p0_10 * b00_01 + p0_11 * b00_02;
     S->blk[0][0].m[0][0] = t76;
     const se23_real_t t77 = t2 + qg * b00_10;
     const se23_real_t t78 = t6 + qg * b00_11;
     const se23_real_t t79 = t10 + qg * b00_12;
-    const se23_real_t t80 = b00_00 * t77 + b00_01 * t78 + b00_02 * t79 + p0_9 * b00_10 + p0_10 * b00_11 + p0_11 * b00_12;
+    const se23_real_t t80 = b00_00 * t77 + b00_01 * t78 + b00_02 * t79 + p0_9 * b00_10
+                            + p0_10 * b00_11 + p0_11 * b00_12;
     S->blk[0][0].m[0][1] = t80;
     const se23_real_t t81 = t3 + qg * b00_20;
     const se23_real_t t82 = t7 + qg * b00_21;
     const se23_real_t t83 = t11 + qg * b00_22;
-    const se23_real_t t84 = b00_00 * t81 + b00_01 * t82 + b00_02 * t83 + p0_9 * b00_20 + p0_10 * b00_21 + p0_11 * b00_22;
+    const se23_real_t t84 = b00_00 * t81 + b00_01 * t82 + b00_02 * t83 + p0_9 * b00_20
+                            + p0_10 * b00_21 + p0_11 * b00_22;
     S->blk[0][0].m[0][2] = t84;
-    const se23_real_t t85 = b00_10 * t77 + b00_11 * t78 + b00_12 * t79 + p1_9 * b00_10 + p1_10 * b00_11 + p1_11 * b00_12;
+    const se23_real_t t85 = b00_10 * t77 + b00_11 * t78 + b00_12 * t79 + p1_9 * b00_10
+                            + p1_10 * b00_11 + p1_11 * b00_12;
     S->blk[0][0].m[1][1] = t85;
-    const se23_real_t t86 = b00_10 * t81 + b00_11 * t82 + b00_12 * t83 + p1_9 * b00_20 + p1_10 * b00_21 + p1_11 * b00_22;
+    const se23_real_t t86 = b00_10 * t81 + b00_11 * t82 + b00_12 * t83 + p1_9 * b00_20
+                            + p1_10 * b00_21 + p1_11 * b00_22;
     S->blk[0][0].m[1][2] = t86;
-    const se23_real_t t87 = b00_20 * t81 + b00_21 * t82 + b00_22 * t83 + p2_9 * b00_20 + p2_10 * b00_21 + p2_11 * b00_22;
+    const se23_real_t t87 = b00_20 * t81 + b00_21 * t82 + b00_22 * t83 + p2_9 * b00_20
+                            + p2_10 * b00_21 + p2_11 * b00_22;
     S->blk[0][0].m[2][2] = t87;
     const se23_real_t t88 = t20 + qg * b10_00;
     const se23_real_t t89 = t27 + qg * b10_01;
     const se23_real_t t90 = t34 + qg * b10_02;
-    const se23_real_t t91 = b00_00 * t88 + b00_01 * t89 + b00_02 * t90 + p0_9 * b10_00 + p0_10 * b10_01 + p0_11 * b10_02;
+    const se23_real_t t91 = b00_00 * t88 + b00_01 * t89 + b00_02 * t90 + p0_9 * b10_00
+                            + p0_10 * b10_01 + p0_11 * b10_02;
     S->blk[0][1].m[0][0] = t91;
     const se23_real_t t92 = t22 + qg * b10_10;
     const se23_real_t t93 = t29 + qg * b10_11;
     const se23_real_t t94 = t36 + qg * b10_12;
-    const se23_real_t t95 = b00_00 * t92 + b00_01 * t93 + b00_02 * t94 + p0_9 * b10_10 + p0_10 * b10_11 + p0_11 * b10_12;
+    const se23_real_t t95 = b00_00 * t92 + b00_01 * t93 + b00_02 * t94 + p0_9 * b10_10
+                            + p0_10 * b10_11 + p0_11 * b10_12;
     S->blk[0][1].m[0][1] = t95;
     const se23_real_t t96 = t24 + qg * b10_20;
     const se23_real_t t97 = t31 + qg * b10_21;
     const se23_real_t t98 = t38 + qg * b10_22;
-    const se23_real_t t99 = b00_00 * t96 + b00_01 * t97 + b00_02 * t98 + p0_9 * b10_20 + p0_10 * b10_21 + p0_11 * b10_22;
+    const se23_real_t t99 = b00_00 * t96 + b00_01 * t97 + b00_02 * t98 + p0_9 * b10_20
+                            + p0_10 * b10_21 + p0_11 * b10_22;
     S->blk[0][1].m[0][2] = t99;
-    const se23_real_t t100 = b00_10 * t88 + b00_11 * t89 + b00_12 * t90 + p1_9 * b10_00 + p1_10 * b10_01 + p1_11 * b10_02;
+    const se23_real_t t100 = b00_10 * t88 + b00_11 * t89 + b00_12 * t90 + p1_9 * b10_00
+                             + p1_10 * b10_01 + p1_11 * b10_02;
     S->blk[0][1].m[1][0] = t100;
-    const se23_real_t t101 = b00_10 * t92 + b00_11 * t93 + b00_12 * t94 + p1_9 * b10_10 + p1_10 * b10_11 + p1_11 * b10_12;
+    const se23_real_t t101 = b00_10 * t92 + b00_11 * t93 + b00_12 * t94 + p1_9 * b10_10
+                             + p1_10 * b10_11 + p1_11 * b10_12;
     S->blk[0][1].m[1][1] = t101;
-    const se23_real_t t102 = b00_10 * t96 + b00_11 * t97 + b00_12 * t98 + p1_9 * b10_20 + p1_10 * b10_21 + p1_11 * b10_22;
+    const se23_real_t t102 = b00_10 * t96 + b00_11 * t97 + b00_12 * t98 + p1_9 * b10_20
+                             + p1_10 * b10_21 + p1_11 * b10_22;
     S->blk[0][1].m[1][2] = t102;
-    const se23_real_t t103 = b00_20 * t88 + b00_21 * t89 + b00_22 * t90 + p2_9 * b10_00 + p2_10 * b10_01 + p2_11 * b10_02;
+    const se23_real_t t103 = b00_20 * t88 + b00_21 * t89 + b00_22 * t90 + p2_9 * b10_00
+                             + p2_10 * b10_01 + p2_11 * b10_02;
     S->blk[0][1].m[2][0] = t103;
-    const se23_real_t t104 = b00_20 * t92 + b00_21 * t93 + b00_22 * t94 + p2_9 * b10_10 + p2_10 * b10_11 + p2_11 * b10_12;
+    const se23_real_t t104 = b00_20 * t92 + b00_21 * t93 + b00_22 * t94 + p2_9 * b10_10
+                             + p2_10 * b10_11 + p2_11 * b10_12;
     S->blk[0][1].m[2][1] = t104;
-    const se23_real_t t105 = b00_20 * t96 + b00_21 * t97 + b00_22 * t98 + p2_9 * b10_20 + p2_10 * b10_21 + p2_11 * b10_22;
+    const se23_real_t t105 = b00_20 * t96 + b00_21 * t97 + b00_22 * t98 + p2_9 * b10_20
+                             + p2_10 * b10_21 + p2_11 * b10_22;
     S->blk[0][1].m[2][2] = t105;
     const se23_real_t t106 = t47 + qg * b20_00;
     const se23_real_t t107 = t54 + qg * b20_01;
     const se23_real_t t108 = t61 + qg * b20_02;
-    const se23_real_t t109 = b00_00 * t106 + b00_01 * t107 + b00_02 * t108 + p0_9 * b20_00 + p0_10 * b20_01 + p0_11 * b20_02;
+    const se23_real_t t109 = b00_00 * t106 + b00_01 * t107 + b00_02 * t108 + p0_9 * b20_00
+                             + p0_10 * b20_01 + p0_11 * b20_02;
     S->blk[0][2].m[0][0] = t109;
     const se23_real_t t110 = t49 + qg * b20_10;
     const se23_real_t t111 = t56 + qg * b20_11;
     const se23_real_t t112 = t63 + qg * b20_12;
-    const se23_real_t t113 = b00_00 * t110 + b00_01 * t111 + b00_02 * t112 + p0_9 * b20_10 + p0_10 * b20_11 + p0_11 * b20_12;
+    const se23_real_t t113 = b00_00 * t110 + b00_01 * t111 + b00_02 * t112 + p0_9 * b20_10
+                             + p0_10 * b20_11 + p0_11 * b20_12;
     S->blk[0][2].m[0][1] = t113;
     const se23_real_t t114 = t51 + qg * b20_20;
     const se23_real_t t115 = t58 + qg * b20_21;
     const se23_real_t t116 = t65 + qg * b20_22;
-    const se23_real_t t117 = b00_00 * t114 + b00_01 * t115 + b00_02 * t116 + p0_9 * b20_20 + p0_10 * b20_21 + p0_11 * b20_22;
+    const se23_real_t t117 = b00_00 * t114 + b00_01 * t115 + b00_02 * t116 + p0_9 * b20_20
+                             + p0_10 * b20_21 + p0_11 * b20_22;
     S->blk[0][2].m[0][2] = t117;
-    const se23_real_t t118 = b00_10 * t106 + b00_11 * t107 + b00_12 * t108 + p1_9 * b20_00 + p1_10 * b20_01 + p1_11 * b20_02;
+    const se23_real_t t118 = b00_10 * t106 + b00_11 * t107 + b00_12 * t108 + p1_9 * b20_00
+                             + p1_10 * b20_01 + p1_11 * b20_02;
     S->blk[0][2].m[1][0] = t118;
-    const se23_real_t t119 = b00_10 * t110 + b00_11 * t111 + b00_12 * t112 + p1_9 * b20_10 + p1_10 * b20_11 + p1_11 * b20_12;
+    const se23_real_t t119 = b00_10 * t110 + b00_11 * t111 + b00_12 * t112 + p1_9 * b20_10
+                             + p1_10 * b20_11 + p1_11 * b20_12;
     S->blk[0][2].m[1][1] = t119;
-    const se23_real_t t120 = b00_10 * t114 + b00_11 * t115 + b00_12 * t116 + p1_9 * b20_20 + p1_10 * b20_21 + p1_11 * b20_22;
+    const se23_real_t t120 = b00_10 * t114 + b00_11 * t115 + b00_12 * t116 + p1_9 * b20_20
+                             + p1_10 * b20_21 + p1_11 * b20_22;
     S->blk[0][2].m[1][2] = t120;
-    const se23_real_t t121 = b00_20 * t106 + b00_21 * t107 + b00_22 * t108 + p2_9 * b20_00 + p2_10 * b20_01 + p2_11 * b20_02;
+    const se23_real_t t121 = b00_20 * t106 + b00_21 * t107 + b00_22 * t108 + p2_9 * b20_00
+                             + p2_10 * b20_01 + p2_11 * b20_02;
     S->blk[0][2].m[2][0] = t121;
-    const se23_real_t t122 = b00_20 * t110 + b00_21 * t111 + b00_22 * t112 + p2_9 * b20_10 + p2_10 * b20_11 + p2_11 * b20_12;
+    const se23_real_t t122 = b00_20 * t110 + b00_21 * t111 + b00_22 * t112 + p2_9 * b20_10
+                             + p2_10 * b20_11 + p2_11 * b20_12;
     S->blk[0][2].m[2][1] = t122;
-    const se23_real_t t123 = b00_20 * t114 + b00_21 * t115 + b00_22 * t116 + p2_9 * b20_20 + p2_10 * b20_21 + p2_11 * b20_22;
+    const se23_real_t t123 = b00_20 * t114 + b00_21 * t115 + b00_22 * t116 + p2_9 * b20_20
+                             + p2_10 * b20_21 + p2_11 * b20_22;
     S->blk[0][2].m[2][2] = t123;
-    const se23_real_t t124 = b10_00 * t88 + b10_01 * t89 + b10_02 * t90 + t19 * b10_00 + t26 * b10_01 + t33 * b10_02;
+    const se23_real_t t124 = b10_00 * t88 + b10_01 * t89 + b10_02 * t90 + t19 * b10_00
+                             + t26 * b10_01 + t33 * b10_02;
     S->blk[1][1].m[0][0] = t124;
-    const se23_real_t t125 = b10_00 * t92 + b10_01 * t93 + b10_02 * t94 + t19 * b10_10 + t26 * b10_11 + t33 * b10_12;
+    const se23_real_t t125 = b10_00 * t92 + b10_01 * t93 + b10_02 * t94 + t19 * b10_10
+                             + t26 * b10_11 + t33 * b10_12;
     S->blk[1][1].m[0][1] = t125;
-    const se23_real_t t126 = b10_00 * t96 + b10_01 * t97 + b10_02 * t98 + t19 * b10_20 + t26 * b10_21 + t33 * b10_22;
+    const se23_real_t t126 = b10_00 * t96 + b10_01 * t97 + b10_02 * t98 + t19 * b10_20
+                             + t26 * b10_21 + t33 * b10_22;
     S->blk[1][1].m[0][2] = t126;
-    const se23_real_t t127 = b10_10 * t92 + b10_11 * t93 + b10_12 * t94 + t21 * b10_10 + t28 * b10_11 + t35 * b10_12;
+    const se23_real_t t127 = b10_10 * t92 + b10_11 * t93 + b10_12 * t94 + t21 * b10_10
+                             + t28 * b10_11 + t35 * b10_12;
     S->blk[1][1].m[1][1] = t127;
-    const se23_real_t t128 = b10_10 * t96 + b10_11 * t97 + b10_12 * t98 + t21 * b10_20 + t28 * b10_21 + t35 * b10_22;
+    const se23_real_t t128 = b10_10 * t96 + b10_11 * t97 + b10_12 * t98 + t21 * b10_20
+                             + t28 * b10_21 + t35 * b10_22;
     S->blk[1][1].m[1][2] = t128;
-    const se23_real_t t129 = b10_20 * t96 + b10_21 * t97 + b10_22 * t98 + t23 * b10_20 + t30 * b10_21 + t37 * b10_22;
+    const se23_real_t t129 = b10_20 * t96 + b10_21 * t97 + b10_22 * t98 + t23 * b10_20
+                             + t30 * b10_21 + t37 * b10_22;
     S->blk[1][1].m[2][2] = t129;
-    const se23_real_t t130 = b10_00 * t106 + b10_01 * t107 + b10_02 * t108 + t19 * b20_00 + t26 * b20_01 + t33 * b20_02;
+    const se23_real_t t130 = b10_00 * t106 + b10_01 * t107 + b10_02 * t108 + t19 * b20_00
+                             + t26 * b20_01 + t33 * b20_02;
     S->blk[1][2].m[0][0] = t130;
-    const se23_real_t t131 = b10_00 * t110 + b10_01 * t111 + b10_02 * t112 + t19 * b20_10 + t26 * b20_11 + t33 * b20_12;
+    const se23_real_t t131 = b10_00 * t110 + b10_01 * t111 + b10_02 * t112 + t19 * b20_10
+                             + t26 * b20_11 + t33 * b20_12;
     S->blk[1][2].m[0][1] = t131;
-    const se23_real_t t132 = b10_00 * t114 + b10_01 * t115 + b10_02 * t116 + t19 * b20_20 + t26 * b20_21 + t33 * b20_22;
+    const se23_real_t t132 = b10_00 * t114 + b10_01 * t115 + b10_02 * t116 + t19 * b20_20
+                             + t26 * b20_21 + t33 * b20_22;
     S->blk[1][2].m[0][2] = t132;
-    const se23_real_t t133 = b10_10 * t106 + b10_11 * t107 + b10_12 * t108 + t21 * b20_00 + t28 * b20_01 + t35 * b20_02;
+    const se23_real_t t133 = b10_10 * t106 + b10_11 * t107 + b10_12 * t108 + t21 * b20_00
+                             + t28 * b20_01 + t35 * b20_02;
     S->blk[1][2].m[1][0] = t133;
-    const se23_real_t t134 = b10_10 * t110 + b10_11 * t111 + b10_12 * t112 + t21 * b20_10 + t28 * b20_11 + t35 * b20_12;
+    const se23_real_t t134 = b10_10 * t110 + b10_11 * t111 + b10_12 * t112 + t21 * b20_10
+                             + t28 * b20_11 + t35 * b20_12;
     S->blk[1][2].m[1][1] = t134;
-    const se23_real_t t135 = b10_10 * t114 + b10_11 * t115 + b10_12 * t116 + t21 * b20_20 + t28 * b20_21 + t35 * b20_22;
+    const se23_real_t t135 = b10_10 * t114 + b10_11 * t115 + b10_12 * t116 + t21 * b20_20
+                             + t28 * b20_21 + t35 * b20_22;
     S->blk[1][2].m[1][2] = t135;
-    const se23_real_t t136 = b10_20 * t106 + b10_21 * t107 + b10_22 * t108 + t23 * b20_00 + t30 * b20_01 + t37 * b20_02;
+    const se23_real_t t136 = b10_20 * t106 + b10_21 * t107 + b10_22 * t108 + t23 * b20_00
+                             + t30 * b20_01 + t37 * b20_02;
     S->blk[1][2].m[2][0] = t136;
-    const se23_real_t t137 = b10_20 * t110 + b10_21 * t111 + b10_22 * t112 + t23 * b20_10 + t30 * b20_11 + t37 * b20_12;
+    const se23_real_t t137 = b10_20 * t110 + b10_21 * t111 + b10_22 * t112 + t23 * b20_10
+                             + t30 * b20_11 + t37 * b20_12;
     S->blk[1][2].m[2][1] = t137;
-    const se23_real_t t138 = b10_20 * t114 + b10_21 * t115 + b10_22 * t116 + t23 * b20_20 + t30 * b20_21 + t37 * b20_22;
+    const se23_real_t t138 = b10_20 * t114 + b10_21 * t115 + b10_22 * t116 + t23 * b20_20
+                             + t30 * b20_21 + t37 * b20_22;
     S->blk[1][2].m[2][2] = t138;
-    const se23_real_t t139 = b20_00 * t106 + b20_01 * t107 + b20_02 * t108 + t46 * b20_00 + t53 * b20_01 + t60 * b20_02;
+    const se23_real_t t139 = b20_00 * t106 + b20_01 * t107 + b20_02 * t108 + t46 * b20_00
+                             + t53 * b20_01 + t60 * b20_02;
     S->blk[2][2].m[0][0] = t139;
-    const se23_real_t t140 = b20_00 * t110 + b20_01 * t111 + b20_02 * t112 + t46 * b20_10 + t53 * b20_11 + t60 * b20_12;
+    const se23_real_t t140 = b20_00 * t110 + b20_01 * t111 + b20_02 * t112 + t46 * b20_10
+                             + t53 * b20_11 + t60 * b20_12;
     S->blk[2][2].m[0][1] = t140;
-    const se23_real_t t141 = b20_00 * t114 + b20_01 * t115 + b20_02 * t116 + t46 * b20_20 + t53 * b20_21 + t60 * b20_22;
+    const se23_real_t t141 = b20_00 * t114 + b20_01 * t115 + b20_02 * t116 + t46 * b20_20
+                             + t53 * b20_21 + t60 * b20_22;
     S->blk[2][2].m[0][2] = t141;
-    const se23_real_t t142 = b20_10 * t110 + b20_11 * t111 + b20_12 * t112 + t48 * b20_10 + t55 * b20_11 + t62 * b20_12;
+    const se23_real_t t142 = b20_10 * t110 + b20_11 * t111 + b20_12 * t112 + t48 * b20_10
+                             + t55 * b20_11 + t62 * b20_12;
     S->blk[2][2].m[1][1] = t142;
-    const se23_real_t t143 = b20_10 * t114 + b20_11 * t115 + b20_12 * t116 + t48 * b20_20 + t55 * b20_21 + t62 * b20_22;
+    const se23_real_t t143 = b20_10 * t114 + b20_11 * t115 + b20_12 * t116 + t48 * b20_20
+                             + t55 * b20_21 + t62 * b20_22;
     S->blk[2][2].m[1][2] = t143;
-    const se23_real_t t144 = b20_20 * t114 + b20_21 * t115 + b20_22 * t116 + t50 * b20_20 + t57 * b20_21 + t64 * b20_22;
+    const se23_real_t t144 = b20_20 * t114 + b20_21 * t115 + b20_22 * t116 + t50 * b20_20
+                             + t57 * b20_21 + t64 * b20_22;
     S->blk[2][2].m[2][2] = t144;
 }
 
@@ -745,7 +729,8 @@ void se23_cov_step15_accel(const se23_pose_t *U, se23_real_t dt, const se23_inpu
     const se23_real_t b11_00 = Bt->blk[1][1].m[0][0];
     const se23_real_t b11_01 = Bt->blk[1][1].m[0][1];
     const se23_real_t b11_02 = Bt->blk[1][1].m[0][2];
-    const se23_real_t t20 = t19 + b10_00 * p9_12 + b10_01 * p10_12 + b10_02 * p11_12 + b11_00 * p12_12 + b11_01 * p12_13 + b11_02 * p12_14;
+    const se23_real_t t20 = t19 + b10_00 * p9_12 + b10_01 * p10_12 + b10_02 * p11_12
+                            + b11_00 * p12_12 + b11_01 * p12_13 + b11_02 * p12_14;
     const se23_real_t p4_12 = P[(stride * 4) + 12];
     const se23_real_t vel0 = U->v.v[0];
     const se23_real_t t21 = p4_12 - vel2 * p0_12 + vel0 * p2_12;
@@ -755,7 +740,8 @@ void se23_cov_step15_accel(const se23_pose_t *U, se23_real_t dt, const se23_inpu
     const se23_real_t b11_10 = Bt->blk[1][1].m[1][0];
     const se23_real_t b11_11 = Bt->blk[1][1].m[1][1];
     const se23_real_t b11_12 = Bt->blk[1][1].m[1][2];
-    const se23_real_t t22 = t21 + b10_10 * p9_12 + b10_11 * p10_12 + b10_12 * p11_12 + b11_10 * p12_12 + b11_11 * p12_13 + b11_12 * p12_14;
+    const se23_real_t t22 = t21 + b10_10 * p9_12 + b10_11 * p10_12 + b10_12 * p11_12
+                            + b11_10 * p12_12 + b11_11 * p12_13 + b11_12 * p12_14;
     const se23_real_t p5_12 = P[(stride * 5) + 12];
     const se23_real_t t23 = p5_12 + vel1 * p0_12 - vel0 * p1_12;
     const se23_real_t b10_20 = Bt->blk[1][0].m[2][0];
@@ -764,7 +750,8 @@ void se23_cov_step15_accel(const se23_pose_t *U, se23_real_t dt, const se23_inpu
     const se23_real_t b11_20 = Bt->blk[1][1].m[2][0];
     const se23_real_t b11_21 = Bt->blk[1][1].m[2][1];
     const se23_real_t b11_22 = Bt->blk[1][1].m[2][2];
-    const se23_real_t t24 = t23 + b10_20 * p9_12 + b10_21 * p10_12 + b10_22 * p11_12 + b11_20 * p12_12 + b11_21 * p12_13 + b11_22 * p12_14;
+    const se23_real_t t24 = t23 + b10_20 * p9_12 + b10_21 * p10_12 + b10_22 * p11_12
+                            + b11_20 * p12_12 + b11_21 * p12_13 + b11_22 * p12_14;
     const se23_real_t t25 = r00 * t20 + r10 * t22 + r20 * t24;
     const se23_real_t p3_13 = P[(stride * 3) + 13];
     const se23_real_t t26 = p3_13 + vel2 * p1_13 - vel1 * p2_13;
@@ -772,26 +759,32 @@ void se23_cov_step15_accel(const se23_pose_t *U, se23_real_t dt, const se23_inpu
     out[(stride * 12) + 3] = t25;
     const se23_real_t p13_13 = P[(stride * 13) + 13];
     const se23_real_t p13_14 = P[(stride * 13) + 14];
-    const se23_real_t t27 = t26 + b10_00 * p9_13 + b10_01 * p10_13 + b10_02 * p11_13 + b11_00 * p12_13 + b11_01 * p13_13 + b11_02 * p13_14;
+    const se23_real_t t27 = t26 + b10_00 * p9_13 + b10_01 * p10_13 + b10_02 * p11_13
+                            + b11_00 * p12_13 + b11_01 * p13_13 + b11_02 * p13_14;
     const se23_real_t p4_13 = P[(stride * 4) + 13];
     const se23_real_t t28 = p4_13 - vel2 * p0_13 + vel0 * p2_13;
-    const se23_real_t t29 = t28 + b10_10 * p9_13 + b10_11 * p10_13 + b10_12 * p11_13 + b11_10 * p12_13 + b11_11 * p13_13 + b11_12 * p13_14;
+    const se23_real_t t29 = t28 + b10_10 * p9_13 + b10_11 * p10_13 + b10_12 * p11_13
+                            + b11_10 * p12_13 + b11_11 * p13_13 + b11_12 * p13_14;
     const se23_real_t p5_13 = P[(stride * 5) + 13];
     const se23_real_t t30 = p5_13 + vel1 * p0_13 - vel0 * p1_13;
-    const se23_real_t t31 = t30 + b10_20 * p9_13 + b10_21 * p10_13 + b10_22 * p11_13 + b11_20 * p12_13 + b11_21 * p13_13 + b11_22 * p13_14;
+    const se23_real_t t31 = t30 + b10_20 * p9_13 + b10_21 * p10_13 + b10_22 * p11_13
+                            + b11_20 * p12_13 + b11_21 * p13_13 + b11_22 * p13_14;
     const se23_real_t t32 = r00 * t27 + r10 * t29 + r20 * t31;
     const se23_real_t p3_14 = P[(stride * 3) + 14];
     const se23_real_t t33 = p3_14 + vel2 * p1_14 - vel1 * p2_14;
     out[(stride * 3) + 13] = t32;
     out[(stride * 13) + 3] = t32;
     const se23_real_t p14_14 = P[(stride * 14) + 14];
-    const se23_real_t t34 = t33 + b10_00 * p9_14 + b10_01 * p10_14 + b10_02 * p11_14 + b11_00 * p12_14 + b11_01 * p13_14 + b11_02 * p14_14;
+    const se23_real_t t34 = t33 + b10_00 * p9_14 + b10_01 * p10_14 + b10_02 * p11_14
+                            + b11_00 * p12_14 + b11_01 * p13_14 + b11_02 * p14_14;
     const se23_real_t p4_14 = P[(stride * 4) + 14];
     const se23_real_t t35 = p4_14 - vel2 * p0_14 + vel0 * p2_14;
-    const se23_real_t t36 = t35 + b10_10 * p9_14 + b10_11 * p10_14 + b10_12 * p11_14 + b11_10 * p12_14 + b11_11 * p13_14 + b11_12 * p14_14;
+    const se23_real_t t36 = t35 + b10_10 * p9_14 + b10_11 * p10_14 + b10_12 * p11_14
+                            + b11_10 * p12_14 + b11_11 * p13_14 + b11_12 * p14_14;
     const se23_real_t p5_14 = P[(stride * 5) + 14];
     const se23_real_t t37 = p5_14 + vel1 * p0_14 - vel0 * p1_14;
-    const se23_real_t t38 = t37 + b10_20 * p9_14 + b10_21 * p10_14 + b10_22 * p11_14 + b11_20 * p12_14 + b11_21 * p13_14 + b11_22 * p14_14;
+    const se23_real_t t38 = t37 + b10_20 * p9_14 + b10_21 * p10_14 + b10_22 * p11_14
+                            + b11_20 * p12_14 + b11_21 * p13_14 + b11_22 * p14_14;
     const se23_real_t t39 = r00 * t34 + r10 * t36 + r20 * t38;
     const se23_real_t t40 = r01 * t20 + r11 * t22 + r21 * t24;
     out[(stride * 3) + 14] = t39;
@@ -823,7 +816,8 @@ void se23_cov_step15_accel(const se23_pose_t *U, se23_real_t dt, const se23_inpu
     const se23_real_t b21_00 = Bt->blk[2][1].m[0][0];
     const se23_real_t b21_01 = Bt->blk[2][1].m[0][1];
     const se23_real_t b21_02 = Bt->blk[2][1].m[0][2];
-    const se23_real_t t47 = t46 + b20_00 * p9_12 + b20_01 * p10_12 + b20_02 * p11_12 + b21_00 * p12_12 + b21_01 * p12_13 + b21_02 * p12_14;
+    const se23_real_t t47 = t46 + b20_00 * p9_12 + b20_01 * p10_12 + b20_02 * p11_12
+                            + b21_00 * p12_12 + b21_01 * p12_13 + b21_02 * p12_14;
     const se23_real_t p7_12 = P[(stride * 7) + 12];
     const se23_real_t pos0 = U->p.v[0];
     const se23_real_t t48 = p7_12 + dt * p4_12 - pos2 * p0_12 + pos0 * p2_12;
@@ -833,7 +827,8 @@ void se23_cov_step15_accel(const se23_pose_t *U, se23_real_t dt, const se23_inpu
     const se23_real_t b21_10 = Bt->blk[2][1].m[1][0];
     const se23_real_t b21_11 = Bt->blk[2][1].m[1][1];
     const se23_real_t b21_12 = Bt->blk[2][1].m[1][2];
-    const se23_real_t t49 = t48 + b20_10 * p9_12 + b20_11 * p10_12 + b20_12 * p11_12 + b21_10 * p12_12 + b21_11 * p12_13 + b21_12 * p12_14;
+    const se23_real_t t49 = t48 + b20_10 * p9_12 + b20_11 * p10_12 + b20_12 * p11_12
+                            + b21_10 * p12_12 + b21_11 * p12_13 + b21_12 * p12_14;
     const se23_real_t p8_12 = P[(stride * 8) + 12];
     const se23_real_t t50 = p8_12 + dt * p5_12 + pos1 * p0_12 - pos0 * p1_12;
     const se23_real_t b20_20 = Bt->blk[2][0].m[2][0];
@@ -842,31 +837,38 @@ void se23_cov_step15_accel(const se23_pose_t *U, se23_real_t dt, const se23_inpu
     const se23_real_t b21_20 = Bt->blk[2][1].m[2][0];
     const se23_real_t b21_21 = Bt->blk[2][1].m[2][1];
     const se23_real_t b21_22 = Bt->blk[2][1].m[2][2];
-    const se23_real_t t51 = t50 + b20_20 * p9_12 + b20_21 * p10_12 + b20_22 * p11_12 + b21_20 * p12_12 + b21_21 * p12_13 + b21_22 * p12_14;
+    const se23_real_t t51 = t50 + b20_20 * p9_12 + b20_21 * p10_12 + b20_22 * p11_12
+                            + b21_20 * p12_12 + b21_21 * p12_13 + b21_22 * p12_14;
     const se23_real_t t52 = r00 * t47 + r10 * t49 + r20 * t51;
     const se23_real_t p6_13 = P[(stride * 6) + 13];
     const se23_real_t t53 = p6_13 + dt * p3_13 + pos2 * p1_13 - pos1 * p2_13;
     out[(stride * 6) + 12] = t52;
     out[(stride * 12) + 6] = t52;
-    const se23_real_t t54 = t53 + b20_00 * p9_13 + b20_01 * p10_13 + b20_02 * p11_13 + b21_00 * p12_13 + b21_01 * p13_13 + b21_02 * p13_14;
+    const se23_real_t t54 = t53 + b20_00 * p9_13 + b20_01 * p10_13 + b20_02 * p11_13
+                            + b21_00 * p12_13 + b21_01 * p13_13 + b21_02 * p13_14;
     const se23_real_t p7_13 = P[(stride * 7) + 13];
     const se23_real_t t55 = p7_13 + dt * p4_13 - pos2 * p0_13 + pos0 * p2_13;
-    const se23_real_t t56 = t55 + b20_10 * p9_13 + b20_11 * p10_13 + b20_12 * p11_13 + b21_10 * p12_13 + b21_11 * p13_13 + b21_12 * p13_14;
+    const se23_real_t t56 = t55 + b20_10 * p9_13 + b20_11 * p10_13 + b20_12 * p11_13
+                            + b21_10 * p12_13 + b21_11 * p13_13 + b21_12 * p13_14;
     const se23_real_t p8_13 = P[(stride * 8) + 13];
     const se23_real_t t57 = p8_13 + dt * p5_13 + pos1 * p0_13 - pos0 * p1_13;
-    const se23_real_t t58 = t57 + b20_20 * p9_13 + b20_21 * p10_13 + b20_22 * p11_13 + b21_20 * p12_13 + b21_21 * p13_13 + b21_22 * p13_14;
+    const se23_real_t t58 = t57 + b20_20 * p9_13 + b20_21 * p10_13 + b20_22 * p11_13
+                            + b21_20 * p12_13 + b21_21 * p13_13 + b21_22 * p13_14;
     const se23_real_t t59 = r00 * t54 + r10 * t56 + r20 * t58;
     const se23_real_t p6_14 = P[(stride * 6) + 14];
     const se23_real_t t60 = p6_14 + dt * p3_14 + pos2 * p1_14 - pos1 * p2_14;
     out[(stride * 6) + 13] = t59;
     out[(stride * 13) + 6] = t59;
-    const se23_real_t t61 = t60 + b20_00 * p9_14 + b20_01 * p10_14 + b20_02 * p11_14 + b21_00 * p12_14 + b21_01 * p13_14 + b21_02 * p14_14;
+    const se23_real_t t61 = t60 + b20_00 * p9_14 + b20_01 * p10_14 + b20_02 * p11_14
+                            + b21_00 * p12_14 + b21_01 * p13_14 + b21_02 * p14_14;
     const se23_real_t p7_14 = P[(stride * 7) + 14];
     const se23_real_t t62 = p7_14 + dt * p4_14 - pos2 * p0_14 + pos0 * p2_14;
-    const se23_real_t t63 = t62 + b20_10 * p9_14 + b20_11 * p10_14 + b20_12 * p11_14 + b21_10 * p12_14 + b21_11 * p13_14 + b21_12 * p14_14;
+    const se23_real_t t63 = t62 + b20_10 * p9_14 + b20_11 * p10_14 + b20_12 * p11_14
+                            + b21_10 * p12_14 + b21_11 * p13_14 + b21_12 * p14_14;
     const se23_real_t p8_14 = P[(stride * 8) + 14];
     const se23_real_t t64 = p8_14 + dt * p5_14 + pos1 * p0_14 - pos0 * p1_14;
-    const se23_real_t t65 = t64 + b20_20 * p9_14 + b20_21 * p10_14 + b20_22 * p11_14 + b21_20 * p12_14 + b21_21 * p13_14 + b21_22 * p14_14;
+    const se23_real_t t65 = t64 + b20_20 * p9_14 + b20_21 * p10_14 + b20_22 * p11_14
+                            + b21_20 * p12_14 + b21_21 * p13_14 + b21_22 * p14_14;
     const se23_real_t t66 = r00 * t61 + r10 * t63 + r20 * t65;
     const se23_real_t t67 = r01 * t47 + r11 * t49 + r21 * t51;
     out[(stride * 6) + 14] = t66;
@@ -947,82 +949,103 @@ void se23_cov_step15_accel(const se23_pose_t *U, se23_real_t dt, const se23_inpu
     const se23_real_t t92 = t27 + qa * b11_01;
     const se23_real_t t93 = t34 + qa * b11_02;
     const se23_real_t s11_00 = S->blk[1][1].m[0][0];
-    const se23_real_t t94 = s11_00 + b11_00 * t91 + b11_01 * t92 + b11_02 * t93 + t19 * b11_00 + t26 * b11_01 + t33 * b11_02;
+    const se23_real_t t94 = s11_00 + b11_00 * t91 + b11_01 * t92 + b11_02 * t93 + t19 * b11_00
+                            + t26 * b11_01 + t33 * b11_02;
     S->blk[1][1].m[0][0] = t94;
     const se23_real_t t95 = t22 + qa * b11_10;
     const se23_real_t t96 = t29 + qa * b11_11;
     const se23_real_t t97 = t36 + qa * b11_12;
     const se23_real_t s11_01 = S->blk[1][1].m[0][1];
-    const se23_real_t t98 = s11_01 + b11_00 * t95 + b11_01 * t96 + b11_02 * t97 + t19 * b11_10 + t26 * b11_11 + t33 * b11_12;
+    const se23_real_t t98 = s11_01 + b11_00 * t95 + b11_01 * t96 + b11_02 * t97 + t19 * b11_10
+                            + t26 * b11_11 + t33 * b11_12;
     S->blk[1][1].m[0][1] = t98;
     const se23_real_t t99 = t24 + qa * b11_20;
     const se23_real_t t100 = t31 + qa * b11_21;
     const se23_real_t t101 = t38 + qa * b11_22;
     const se23_real_t s11_02 = S->blk[1][1].m[0][2];
-    const se23_real_t t102 = s11_02 + b11_00 * t99 + b11_01 * t100 + b11_02 * t101 + t19 * b11_20 + t26 * b11_21 + t33 * b11_22;
+    const se23_real_t t102 = s11_02 + b11_00 * t99 + b11_01 * t100 + b11_02 * t101
+                             + t19 * b11_20 + t26 * b11_21 + t33 * b11_22;
     S->blk[1][1].m[0][2] = t102;
     const se23_real_t s11_11 = S->blk[1][1].m[1][1];
-    const se23_real_t t103 = s11_11 + b11_10 * t95 + b11_11 * t96 + b11_12 * t97 + t21 * b11_10 + t28 * b11_11 + t35 * b11_12;
+    const se23_real_t t103 = s11_11 + b11_10 * t95 + b11_11 * t96 + b11_12 * t97 + t21 * b11_10
+                             + t28 * b11_11 + t35 * b11_12;
     S->blk[1][1].m[1][1] = t103;
     const se23_real_t s11_12 = S->blk[1][1].m[1][2];
-    const se23_real_t t104 = s11_12 + b11_10 * t99 + b11_11 * t100 + b11_12 * t101 + t21 * b11_20 + t28 * b11_21 + t35 * b11_22;
+    const se23_real_t t104 = s11_12 + b11_10 * t99 + b11_11 * t100 + b11_12 * t101
+                             + t21 * b11_20 + t28 * b11_21 + t35 * b11_22;
     S->blk[1][1].m[1][2] = t104;
     const se23_real_t s11_22 = S->blk[1][1].m[2][2];
-    const se23_real_t t105 = s11_22 + b11_20 * t99 + b11_21 * t100 + b11_22 * t101 + t23 * b11_20 + t30 * b11_21 + t37 * b11_22;
+    const se23_real_t t105 = s11_22 + b11_20 * t99 + b11_21 * t100 + b11_22 * t101
+                             + t23 * b11_20 + t30 * b11_21 + t37 * b11_22;
     S->blk[1][1].m[2][2] = t105;
     const se23_real_t t106 = t47 + qa * b21_00;
     const se23_real_t t107 = t54 + qa * b21_01;
     const se23_real_t t108 = t61 + qa * b21_02;
     const se23_real_t s12_00 = S->blk[1][2].m[0][0];
-    const se23_real_t t109 = s12_00 + b11_00 * t106 + b11_01 * t107 + b11_02 * t108 + t19 * b21_00 + t26 * b21_01 + t33 * b21_02;
+    const se23_real_t t109 = s12_00 + b11_00 * t106 + b11_01 * t107 + b11_02 * t108
+                             + t19 * b21_00 + t26 * b21_01 + t33 * b21_02;
     S->blk[1][2].m[0][0] = t109;
     const se23_real_t t110 = t49 + qa * b21_10;
     const se23_real_t t111 = t56 + qa * b21_11;
     const se23_real_t t112 = t63 + qa * b21_12;
     const se23_real_t s12_01 = S->blk[1][2].m[0][1];
-    const se23_real_t t113 = s12_01 + b11_00 * t110 + b11_01 * t111 + b11_02 * t112 + t19 * b21_10 + t26 * b21_11 + t33 * b21_12;
+    const se23_real_t t113 = s12_01 + b11_00 * t110 + b11_01 * t111 + b11_02 * t112
+                             + t19 * b21_10 + t26 * b21_11 + t33 * b21_12;
     S->blk[1][2].m[0][1] = t113;
     const se23_real_t t114 = t51 + qa * b21_20;
     const se23_real_t t115 = t58 + qa * b21_21;
     const se23_real_t t116 = t65 + qa * b21_22;
     const se23_real_t s12_02 = S->blk[1][2].m[0][2];
-    const se23_real_t t117 = s12_02 + b11_00 * t114 + b11_01 * t115 + b11_02 * t116 + t19 * b21_20 + t26 * b21_21 + t33 * b21_22;
+    const se23_real_t t117 = s12_02 + b11_00 * t114 + b11_01 * t115 + b11_02 * t116
+                             + t19 * b21_20 + t26 * b21_21 + t33 * b21_22;
     S->blk[1][2].m[0][2] = t117;
     const se23_real_t s12_10 = S->blk[1][2].m[1][0];
-    const se23_real_t t118 = s12_10 + b11_10 * t106 + b11_11 * t107 + b11_12 * t108 + t21 * b21_00 + t28 * b21_01 + t35 * b21_02;
+    const se23_real_t t118 = s12_10 + b11_10 * t106 + b11_11 * t107 + b11_12 * t108
+                             + t21 * b21_00 + t28 * b21_01 + t35 * b21_02;
     S->blk[1][2].m[1][0] = t118;
     const se23_real_t s12_11 = S->blk[1][2].m[1][1];
-    const se23_real_t t119 = s12_11 + b11_10 * t110 + b11_11 * t111 + b11_12 * t112 + t21 * b21_10 + t28 * b21_11 + t35 * b21_12;
+    const se23_real_t t119 = s12_11 + b11_10 * t110 + b11_11 * t111 + b11_12 * t112
+                             + t21 * b21_10 + t28 * b21_11 + t35 * b21_12;
     S->blk[1][2].m[1][1] = t119;
     const se23_real_t s12_12 = S->blk[1][2].m[1][2];
-    const se23_real_t t120 = s12_12 + b11_10 * t114 + b11_11 * t115 + b11_12 * t116 + t21 * b21_20 + t28 * b21_21 + t35 * b21_22;
+    const se23_real_t t120 = s12_12 + b11_10 * t114 + b11_11 * t115 + b11_12 * t116
+                             + t21 * b21_20 + t28 * b21_21 + t35 * b21_22;
     S->blk[1][2].m[1][2] = t120;
     const se23_real_t s12_20 = S->blk[1][2].m[2][0];
-    const se23_real_t t121 = s12_20 + b11_20 * t106 + b11_21 * t107 + b11_22 * t108 + t23 * b21_00 + t30 * b21_01 + t37 * b21_02;
+    const se23_real_t t121 = s12_20 + b11_20 * t106 + b11_21 * t107 + b11_22 * t108
+                             + t23 * b21_00 + t30 * b21_01 + t37 * b21_02;
     S->blk[1][2].m[2][0] = t121;
     const se23_real_t s12_21 = S->blk[1][2].m[2][1];
-    const se23_real_t t122 = s12_21 + b11_20 * t110 + b11_21 * t111 + b11_22 * t112 + t23 * b21_10 + t30 * b21_11 + t37 * b21_12;
+    const se23_real_t t122 = s12_21 + b11_20 * t110 + b11_21 * t111 + b11_22 * t112
+                             + t23 * b21_10 + t30 * b21_11 + t37 * b21_12;
     S->blk[1][2].m[2][1] = t122;
     const se23_real_t s12_22 = S->blk[1][2].m[2][2];
-    const se23_real_t t123 = s12_22 + b11_20 * t114 + b11_21 * t115 + b11_22 * t116 + t23 * b21_20 + t30 * b21_21 + t37 * b21_22;
+    const se23_real_t t123 = s12_22 + b11_20 * t114 + b11_21 * t115 + b11_22 * t116
+                             + t23 * b21_20 + t30 * b21_21 + t37 * b21_22;
     S->blk[1][2].m[2][2] = t123;
     const se23_real_t s22_00 = S->blk[2][2].m[0][0];
-    const se23_real_t t124 = s22_00 + b21_00 * t106 + b21_01 * t107 + b21_02 * t108 + t46 * b21_00 + t53 * b21_01 + t60 * b21_02;
+    const se23_real_t t124 = s22_00 + b21_00 * t106 + b21_01 * t107 + b21_02 * t108
+                             + t46 * b21_00 + t53 * b21_01 + t60 * b21_02;
     S->blk[2][2].m[0][0] = t124;
     const se23_real_t s22_01 = S->blk[2][2].m[0][1];
-    const se23_real_t t125 = s22_01 + b21_00 * t110 + b21_01 * t111 + b21_02 * t112 + t46 * b21_10 + t53 * b21_11 + t60 * b21_12;
+    const se23_real_t t125 = s22_01 + b21_00 * t110 + b21_01 * t111 + b21_02 * t112
+                             + t46 * b21_10 + t53 * b21_11 + t60 * b21_12;
     S->blk[2][2].m[0][1] = t125;
     const se23_real_t s22_02 = S->blk[2][2].m[0][2];
-    const se23_real_t t126 = s22_02 + b21_00 * t114 + b21_01 * t115 + b21_02 * t116 + t46 * b21_20 + t53 * b21_21 + t60 * b21_22;
+    const se23_real_t t126 = s22_02 + b21_00 * t114 + b21_01 * t115 + b21_02 * t116
+                             + t46 * b21_20 + t53 * b21_21 + t60 * b21_22;
     S->blk[2][2].m[0][2] = t126;
     const se23_real_t s22_11 = S->blk[2][2].m[1][1];
-    const se23_real_t t127 = s22_11 + b21_10 * t110 + b21_11 * t111 + b21_12 * t112 + t48 * b21_10 + t55 * b21_11 + t62 * b21_12;
+    const se23_real_t t127 = s22_11 + b21_10 * t110 + b21_11 * t111 + b21_12 * t112
+                             + t48 * b21_10 + t55 * b21_11 + t62 * b21_12;
     S->blk[2][2].m[1][1] = t127;
     const se23_real_t s22_12 = S->blk[2][2].m[1][2];
-    const se23_real_t t128 = s22_12 + b21_10 * t114 + b21_11 * t115 + b21_12 * t116 + t48 * b21_20 + t55 * b21_21 + t62 * b21_22;
+    const se23_real_t t128 = s22_12 + b21_10 * t114 + b21_11 * t115 + b21_12 * t116
+                             + t48 * b21_20 + t55 * b21_21 + t62 * b21_22;
     S->blk[2][2].m[1][2] = t128;
     const se23_real_t s22_22 = S->blk[2][2].m[2][2];
-    const se23_real_t t129 = s22_22 + b21_20 * t114 + b21_21 * t115 + b21_22 * t116 + t50 * b21_20 + t57 * b21_21 + t64 * b21_22;
+    const se23_real_t t129 = s22_22 + b21_20 * t114 + b21_21 * t115 + b21_22 * t116
+                             + t50 * b21_20 + t57 * b21_21 + t64 * b21_22;
     S->blk[2][2].m[2][2] = t129;
     const se23_real_t p9_9 = P[(stride * 9) + 9];
     const se23_real_t wg = q->wg;
@@ -1076,10 +1099,10 @@ void se23_cov_step15_accel(const se23_pose_t *U, se23_real_t dt, const se23_inpu
     out[(stride * 14) + 14] = t135;
 }
 
-/* 15 states, third stage: S += G X G^T: 216 multiplies and 261 adds (fused
- * into multiply-adds where the target has them); reads 45 entries of P,
- * stores 0. */
-void se23_cov_step15_pre(const se23_pose_t *U, se23_real_t dt, const se23_real_t *P, int stride,
+/* 9 and 15 states, after E: S += G X G^T: 216 multiplies and 261 adds
+ * (fused into multiply-adds where the target has them); reads 45 entries
+ * of P, stores 0. */
+void se23_cov_shear_pose(const se23_pose_t *U, se23_real_t dt, const se23_real_t *P, int stride,
                          se23_cov_pose_t *S)
 {
     const se23_real_t p6_6 = P[(stride * 6) + 6];

@@ -45,11 +45,10 @@ static void rotation_increment(const se23_imu_sample_t *s, se23_vec3_t *phi,
     se23_m3_series(SE23_R(1), c->c1, c->c2, phi, R);
 }
 
-void se23_imu_increment_parts(const se23_imu_sample_t *s, se23_pose_t *ups,
-                              se23_increment_parts_t *parts)
+/* ups and its parts q (both written) of a checked sample. */
+static void increment_into(const se23_imu_sample_t *s, se23_pose_t *ups,
+                           se23_increment_parts_t *q)
 {
-    se23_increment_parts_t local;
-    se23_increment_parts_t *q = (parts != NULL) ? parts : &local;
     rotation_increment(s, &q->th, &q->t, &q->c, &ups->R);
     se23_m3_series(SE23_R(1), q->c.c2, q->c.c3, &q->th, &q->J);
     se23_m3_mul_v3(&q->J, &s->f_b, &ups->v);
@@ -57,6 +56,17 @@ void se23_imu_increment_parts(const se23_imu_sample_t *s, se23_pose_t *ups,
     se23_m3_series(SE23_R(0.5), q->c.c3, q->c.c4, &q->th, &q->H);
     se23_m3_mul_v3(&q->H, &s->f_b, &ups->p);
     se23_v3_scale(&ups->p, s->dt * s->dt, &ups->p);
+}
+
+void se23_imu_increment_parts(const se23_imu_sample_t *s, se23_pose_t *ups,
+                              se23_increment_parts_t *parts)
+{
+    if (parts != NULL) {
+        increment_into(s, ups, parts);
+    } else {
+        se23_increment_parts_t local;
+        increment_into(s, ups, &local);
+    }
 }
 
 se23_status_t se23_imu_increment(const se23_imu_sample_t *s, se23_pose_t *ups)

@@ -131,7 +131,7 @@ class Gen:
                 out += (" - " if sign < 0 else " + ") + prod
         self.ntmp += 1
         name = "t%d" % self.ntmp
-        self.lines.append("const se23_real_t %s = %s;" % (name, out))
+        self.lines.append(wrap_statement("const se23_real_t %s = %s;" % (name, out)))
         self.flush()
         return (1, name)
 
@@ -217,6 +217,23 @@ class Gen:
 ONE = (1, "SE23_R(1)")
 
 
+def wrap_statement(line, width=96):
+    """line broken before a + or - past width (the function body is
+    indented by 4), continuations aligned after the =."""
+    if len(line) + 4 <= width:
+        return line
+    indent = " " * (line.index("= ") + 2)
+    out, cur = [], ""
+    for tok in line.replace(" + ", "\0+ ").replace(" - ", "\0- ").split("\0"):
+        if cur and len(cur) + 1 + len(tok) + 4 > width:
+            out.append(cur)
+            cur = indent + tok
+        else:
+            cur = tok if not cur else cur + " " + tok
+    out.append(cur)
+    return "\n    ".join(out)
+
+
 def diag(s):
     return [[(1, s) if i == j else None for j in range(3)] for i in range(3)]
 
@@ -241,14 +258,13 @@ PHI, NU, RHO = 0, 1, 2
 
 
 def kernel(g, mode):
-    """The first stages of the covariance step (cov_step.h) on Gen g, up
-    to the scratch S of the pose blocks before the rotation. mode "pose9":
-    S = G X G^T + E for 9 states. 15 states in three stages, each its own
-    function so that none holds another's values in registers: "bias15g"
-    and "bias15a" store the cross blocks of the gyro and the accel bias and
-    S = E (from Y = G C and Zq = Y + Bt Bb + Bt N, by bias column), the
-    second also the bias block; "pose15" adds G X G^T to S."""
-    bias = mode != "pose9"  # the 15-state stages
+    """The stages of the covariance step (cov_step.h) up to the scratch S
+    of the pose blocks before the rotation, on Gen g; each is a function of
+    its own, so that none holds another's values in registers. S = E:
+    "noise9" for 9 states (E = Bt N Bt^T); for 15, "bias15g" and "bias15a"
+    store the cross blocks of the gyro and the accel bias and E by bias
+    column (from Y = G C and Zq = Y + Bt Bb + Bt N), the second also the
+    bias block. Then "shear", for both: S += G X G^T."""
     R = named("r")
     Rt = tr(R)
     Vp, Vm = skew("vel", 1), skew("vel", -1)
@@ -313,19 +329,21 @@ def kernel(g, mode):
                             g.store(c, r, e)
         g.finish()
         return
-    if not bias:
+    if mode == "noise9":
         qBtT = [[tr(g.scale(qs[k], Bt[j][k])) if Bt[j][k] is not None else None
                  for k in range(2)] for j in range(3)]
+        for i in range(3):
+            for j in range(i, 3):
+                pairs = [(Bt[i][k], qBtT[j][k]) for k in range(2)
+                         if Bt[i][k] is not None and Bt[j][k] is not None]
+                g.put_block("S->blk[%d][%d]" % (i, j), g.lin(pairs, sym=(i == j)),
+                            upper=(i == j))
+        g.finish()
+        return
 
     def finish(i, j, A_pairs, A_base):
-        """Scratch block (i, j) = A_ij + E_ij (upper triangle if i = j):
-        E_ij from the first stage (15 states) or Bt_i N Bt_j^T (9)."""
-        if bias:
-            S = g.lin(A_pairs, base=A_base, sym=(i == j), extra=scratch_block(i, j))
-        else:
-            pairs = [(Bt[i][k], qBtT[j][k]) for k in range(2)
-                     if Bt[i][k] is not None and qBtT[j][k] is not None]
-            S = g.lin(A_pairs + pairs, base=A_base, sym=(i == j))
+        """Scratch block (i, j) += A_ij (upper triangle if i = j)."""
+        S = g.lin(A_pairs, base=A_base, sym=(i == j), extra=scratch_block(i, j))
         g.put_block("S->blk[%d][%d]" % (i, j), S, upper=(i == j))
 
     # The in-place order: (2,2), (1,2), (1,1), (0,2), (0,1), (0,0).
@@ -415,10 +433,9 @@ def inputs():
 
 # name, what it is, parameters
 SIGNATURES = {
-    "pose9": ("se23_cov_step9_pre", "9 states, first stage: S = G X G^T + E",
-              "const se23_pose_t *U, se23_real_t dt, const se23_input_blocks_t *Bt,\n"
-              "const se23_step_noise_t *q, const se23_real_t *P, int stride,\n"
-              "se23_cov_pose_t *S"),
+    "noise9": ("se23_cov_step9_noise", "9 states, first stage: S = E = Bt N Bt^T",
+               "const se23_input_blocks_t *Bt, const se23_step_noise_t *q,\n"
+               "se23_cov_pose_t *S"),
     "bias15g": ("se23_cov_step15_gyro", "15 states, first stage: the gyro-bias "
                 "cross blocks, S = E's gyro terms",
                 "const se23_pose_t *U, se23_real_t dt, const se23_input_blocks_t *Bt,\n"
@@ -429,9 +446,9 @@ SIGNATURES = {
                 "const se23_pose_t *U, se23_real_t dt, const se23_input_blocks_t *Bt,\n"
                 "const se23_step_noise_t *q, const se23_real_t *P, se23_real_t *out,\n"
                 "int stride, se23_cov_pose_t *S"),
-    "pose15": ("se23_cov_step15_pre", "15 states, third stage: S += G X G^T",
-               "const se23_pose_t *U, se23_real_t dt, const se23_real_t *P, int stride,\n"
-               "se23_cov_pose_t *S"),
+    "shear": ("se23_cov_shear_pose", "9 and 15 states, after E: S += G X G^T",
+              "const se23_pose_t *U, se23_real_t dt, const se23_real_t *P, int stride,\n"
+              "se23_cov_pose_t *S"),
     "rotate": ("se23_cov_rotate_pose", "the last stage: the pose blocks R^T S R",
                "const se23_pose_t *U, const se23_cov_pose_t *S, se23_real_t *out,\n"
                "int stride"),
@@ -451,9 +468,10 @@ def function(mode):
     run(g)
     name, what, params = SIGNATURES[mode]
     pad = " " * (len(name) + 6)
+    io = ("; reads %d entries of P, stores %d" % (len(g.loaded), g.stores)
+          if g.loaded or g.stores else "")
     doc = textwrap.wrap("%s: %d multiplies and %d adds (fused into multiply-adds "
-                        "where the target has them); reads %d entries of P, stores %d."
-                        % (what, g.muls, g.adds, len(g.loaded), g.stores), 72,
+                        "where the target has them)%s." % (what, g.muls, g.adds, io), 72,
                         break_on_hyphens=False)
     doc = "/* " + "\n * ".join(doc) + " */\n"
     sig = "void %s(%s)\n" % (name, params.replace("\n", "\n" + pad))
@@ -476,7 +494,7 @@ def jac_function():
 
 def source():
     parts = []
-    for mode in ("pose9", "bias15g", "bias15a", "pose15", "rotate"):
+    for mode in ("noise9", "bias15g", "bias15a", "shear", "rotate"):
         parts.append(function(mode))
     parts.append(jac_function())
     return ("/* Generated by tools/gen/gen_cov_step.py: do not edit; change the\n"
