@@ -160,6 +160,20 @@ static void zero_block(se23_mat3_t *A)
     A->m[2][2] = SE23_R(0);
 }
 
+/* B = A, written out (a struct copy is a memcpy call on Cortex-M7). */
+static void copy_block(const se23_mat3_t *A, se23_mat3_t *B)
+{
+    B->m[0][0] = A->m[0][0];
+    B->m[0][1] = A->m[0][1];
+    B->m[0][2] = A->m[0][2];
+    B->m[1][0] = A->m[1][0];
+    B->m[1][1] = A->m[1][1];
+    B->m[1][2] = A->m[1][2];
+    B->m[2][0] = A->m[2][0];
+    B->m[2][1] = A->m[2][1];
+    B->m[2][2] = A->m[2][2];
+}
+
 void se23_input_blocks(se23_input_jac_kind_t kind,
                        const se23_increment_parts_t *q, const se23_mat3_t *R,
                        const se23_vec3_t *f, se23_real_t dt,
@@ -180,7 +194,7 @@ void se23_input_blocks(se23_input_jac_kind_t kind,
     const se23_real_t dt2 = dt * dt;
     se23_m3_scale(&q->J, dt, &Bt->blk[0][0]);
     series_deriv(q->c.c2, q->c.c3, d.d2, d.d3, &q->th, f, dt2, &Bt->blk[1][0]);
-    se23_m3_scale(&q->J, dt, &Bt->blk[1][1]);
+    copy_block(&Bt->blk[0][0], &Bt->blk[1][1]); /* dt J in both */
     series_deriv(q->c.c3, q->c.c4, d.d3, d.d4, &q->th, f, dt2 * dt, &Bt->blk[2][0]);
     se23_m3_scale(&q->H, dt2, &Bt->blk[2][1]);
 }
