@@ -18,10 +18,13 @@
  * the diagonal blocks' upper triangles are computed and mirrored, so P+ is
  * exactly symmetric.
  *
- * In place: the pose blocks are computed in the order (2,2), (1,2), (1,1),
- * (0,2), (0,1), (0,0) (A_22 needs every X_ij; A_12 no longer X_22; ...), and
- * the generator stores each entry after the read of the entry of P it
- * replaces. Operation counts: cov_step_kernel.c. */
+ * se23_cov_step runs the stages of cov_step.h: E into a scratch S of the
+ * pose blocks (for 15 states a bias column at a time, storing the cross
+ * blocks D Z and the bias block), then S += G X G^T, then out's pose blocks
+ * R^T S R. In place: a stage stores an entry of out only after its read of
+ * the entry of P it replaces (the generator orders them so), the cross and
+ * bias blocks are read by no later stage, and the pose blocks are stored
+ * last. Operation counts: cov_step_kernel.c. */
 #include "cov_step.h"
 
 #include <float.h>
