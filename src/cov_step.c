@@ -145,15 +145,23 @@ se23_real_t se23_input_blocks_row_sum(const se23_input_blocks_t *Bt)
     return b;
 }
 
+/* sum_i |P_ii| (n a multiple of 3), at least the largest variance: for a
+ * PSD P (trusted) a bound on every |P_ij|, cheaper than the maximum. */
+static se23_real_t variance_bound(int n, const se23_real_t *P, int stride)
+{
+    se23_real_t d = SE23_R(0);
+    for (int i = 0; i < n; i += 3) {
+        const se23_real_t *p = &P[stride * i + i];
+        d += se23_fabs(p[0]) + se23_fabs(p[stride + 1]) + se23_fabs(p[(2 * stride) + 2]);
+    }
+    return d;
+}
+
 int se23_cov_step_fits(const se23_pose_t *U, se23_real_t dt, se23_real_t b,
                        const se23_step_noise_t *q, int n, const se23_real_t *P,
                        int stride)
 {
-    se23_real_t d = SE23_R(0); /* largest variance (P_ii >= 0, trusted) */
-    for (int i = 0; i < n; ++i) {
-        const se23_real_t x = P[stride * i + i];
-        d = (x > d) ? x : d;
-    }
+    const se23_real_t d = variance_bound(n, P, stride);
     /* Row sums: G's at most 1 + dt + |v|_1 + |p|_1, [G, Bt]'s that plus b,
      * R^T's at most sqrt(3) < 2; q at most the larger density. */
     const se23_real_t g = SE23_R(1) + dt + se23_fabs(U->v.v[0]) + se23_fabs(U->v.v[1]) +
@@ -219,11 +227,7 @@ static void blk_load_sym(const se23_real_t *P, int stride, int a, int b,
 
 int se23_cov_nu_shear_fits(const se23_vec3_t *a, int n, const se23_real_t *P, int stride)
 {
-    se23_real_t d = SE23_R(0); /* largest variance (P_ii >= 0, trusted) */
-    for (int i = 0; i < n; ++i) {
-        const se23_real_t x = P[stride * i + i];
-        d = (x > d) ? x : d;
-    }
+    const se23_real_t d = variance_bound(n, P, stride);
     const se23_real_t s =
         SE23_R(1) + se23_fabs(a->v[0]) + se23_fabs(a->v[1]) + se23_fabs(a->v[2]);
     return (d * s * s) <= SE23_COV_STEP_MAX; /* NaN fails */

@@ -52,8 +52,9 @@ se23_status_t se23_step_noise(const se23_imu_noise_t *nz, se23_real_t dt,
                               se23_step_noise_t *q);
 
 /**
- * Nonzero if se23_cov_step with these inputs cannot overflow: |P_ij| <= d =
- * max_i P_ii for a PSD P, so every entry of Phi P Phi^T + Q is at most
+ * Nonzero if se23_cov_step with these inputs cannot overflow: |P_ij| <=
+ * max_i P_ii <= d = sum_i |P_ii| for a PSD P (n a multiple of 3; the sum is
+ * cheaper than the maximum), so every entry of Phi P Phi^T + Q is at most
  * 2 d r^2 + 4 q b^2 + w, with r a bound on the absolute row sums of Phi
  * and b one on those of Bt; the bound must stay 64 times below the largest
  * real. O(n).
@@ -129,7 +130,7 @@ void se23_cov_rotate_pose(const se23_pose_t *U, const se23_cov_pose_t *S, se23_r
                           int stride);
 
 /** Nonzero if every entry of se23_cov_nu_shear's result stays finite:
- *  with d = max_i P_ii (P PSD, so |P_ij| <= d) each entry of M P M^T is
+ *  with d = sum_i |P_ii| (P PSD, so |P_ij| <= d) each entry of M P M^T is
  *  at most d (1 + |a|_1)^2, which must stay 64 times below the largest
  *  real. O(n). */
 int se23_cov_nu_shear_fits(const se23_vec3_t *a, int n, const se23_real_t *P, int stride);

@@ -45,17 +45,25 @@ static void rotation_increment(const se23_imu_sample_t *s, se23_vec3_t *phi,
     se23_m3_series(SE23_R(1), c->c1, c->c2, phi, R);
 }
 
+/* out = k A x, one pass (out may not alias x). */
+static void scaled_mul_v3(const se23_mat3_t *A, const se23_vec3_t *x, se23_real_t k,
+                          se23_vec3_t *out)
+{
+    const se23_real_t x0 = x->v[0], x1 = x->v[1], x2 = x->v[2];
+    out->v[0] = k * (A->m[0][0] * x0 + A->m[0][1] * x1 + A->m[0][2] * x2);
+    out->v[1] = k * (A->m[1][0] * x0 + A->m[1][1] * x1 + A->m[1][2] * x2);
+    out->v[2] = k * (A->m[2][0] * x0 + A->m[2][1] * x1 + A->m[2][2] * x2);
+}
+
 /* ups and its parts q (both written) of a checked sample. */
 static void increment_into(const se23_imu_sample_t *s, se23_pose_t *ups,
                            se23_increment_parts_t *q)
 {
     rotation_increment(s, &q->th, &q->t, &q->c, &ups->R);
     se23_m3_series(SE23_R(1), q->c.c2, q->c.c3, &q->th, &q->J);
-    se23_m3_mul_v3(&q->J, &s->f_b, &ups->v);
-    se23_v3_scale(&ups->v, s->dt, &ups->v);
+    scaled_mul_v3(&q->J, &s->f_b, s->dt, &ups->v);
     se23_m3_series(SE23_R(0.5), q->c.c3, q->c.c4, &q->th, &q->H);
-    se23_m3_mul_v3(&q->H, &s->f_b, &ups->p);
-    se23_v3_scale(&ups->p, s->dt * s->dt, &ups->p);
+    scaled_mul_v3(&q->H, &s->f_b, s->dt * s->dt, &ups->p);
 }
 
 void se23_imu_increment_parts(const se23_imu_sample_t *s, se23_pose_t *ups,
