@@ -27,19 +27,12 @@
  * last. Operation counts: cov_step_kernel.c. */
 #include "cov_step.h"
 
-#include <float.h>
 
 #include "linalg.h"
 #include "se23_math.h"
 
 enum { PHI = 0, NU = 1, RHO = 2, GYR = 0, ACC = 1 };
 
-/* Entries of P+ below this cannot overflow in the kernel's sums. */
-#if SE23_CFG_DOUBLE
-#define SE23_COV_STEP_MAX (SE23_R(DBL_MAX) / SE23_R(64))
-#else
-#define SE23_COV_STEP_MAX (SE23_R(FLT_MAX) / SE23_R(64))
-#endif
 
 /* A = the 3x3 block of P at rows r0.., columns c0.. */
 static void blk_load(const se23_real_t *P, int stride, int r0, int c0,

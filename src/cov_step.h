@@ -22,9 +22,20 @@
 #ifndef SE23_COV_STEP_H
 #define SE23_COV_STEP_H
 
+#include <float.h>
+
 #include "imu_step.h"
 #include "se23/gauss.h"
 #include "se23/types.h"
+
+/** The O(n) overflow bounds of a step (se23_cov_step_fits, the factor's
+ *  bound on J+ and the Deltas) keep every result and partial sum below
+ *  this: 64 times below the largest real. */
+#if SE23_CFG_DOUBLE
+#define SE23_COV_STEP_MAX (SE23_R(DBL_MAX) / SE23_R(64))
+#else
+#define SE23_COV_STEP_MAX (SE23_R(FLT_MAX) / SE23_R(64))
+#endif
 
 /** Bt, the 9x6 input matrix before the rotation D: blk[i][k] is block row i
  *  (phi, nu, rho) and block column k (0: gyro, 1: accel). blk[0][1] is

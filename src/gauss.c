@@ -271,12 +271,8 @@ se23_status_t se23_gauss_predict(const se23_earth_model_t *model,
     if (st != SE23_OK) {
         return st;
     }
-    se23_imu_sample_t c; /* corrected inputs */
-    for (int i = 0; i < 3; ++i) {
-        c.w_ib_b.v[i] = s->w_ib_b.v[i] + g->b_g.v[i];
-        c.f_b.v[i] = s->f_b.v[i] + g->b_a.v[i];
-    }
-    c.dt = s->dt;
+    se23_imu_sample_t c;
+    se23_imu_sample_corrected(s, &g->b_g, &g->b_a, &c);
     /* The step checks the sample; its outputs are locals until the end. */
     se23_pose_t U, T_next;
     se23_increment_parts_t parts;

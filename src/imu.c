@@ -25,6 +25,16 @@ se23_status_t se23_imu_sample_check(const se23_imu_sample_t *s, se23_real_t dt_m
     return SE23_OK;
 }
 
+void se23_imu_sample_corrected(const se23_imu_sample_t *s, const se23_vec3_t *b_g,
+                               const se23_vec3_t *b_a, se23_imu_sample_t *c)
+{
+    for (int i = 0; i < 3; ++i) {
+        c->w_ib_b.v[i] = s->w_ib_b.v[i] + b_g->v[i];
+        c->f_b.v[i] = s->f_b.v[i] + b_a->v[i];
+    }
+    c->dt = s->dt;
+}
+
 int se23_sample_tame(const se23_imu_sample_t *s)
 {
     const se23_real_t w1 = se23_fabs(s->w_ib_b.v[0]) + se23_fabs(s->w_ib_b.v[1]) +

@@ -24,6 +24,11 @@ typedef struct {
  *  0 < dt <= dt_max. */
 se23_status_t se23_imu_sample_check(const se23_imu_sample_t *s, se23_real_t dt_max);
 
+/** c = s with the bias estimates added (w + b_g, f + b_a; the filter's and
+ *  the factor's corrected sample). May overflow: checked by the caller. */
+void se23_imu_sample_corrected(const se23_imu_sample_t *s, const se23_vec3_t *b_g,
+                               const se23_vec3_t *b_a, se23_imu_sample_t *c);
+
 /**
  * Nonzero for every sample an IMU gives: |w dt|_1 <= 8, dt <= 8 and
  * |f|_1 <= SE23_SAMPLE_F_TAME, about the square root of the largest real.

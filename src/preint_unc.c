@@ -3,8 +3,6 @@
  * gauss.h (one implementation for the filter and the factor). */
 #include "se23/preint_unc.h"
 
-#include <float.h>
-
 #include "argcheck.h"
 #include "cov.h"
 #include "cov_step.h"
@@ -93,12 +91,6 @@ se23_status_t se23_preint_unc_check(const se23_preint_unc_t *fu)
     return se23_cov_check(fu->P.m, 9, 9);
 }
 
-#if SE23_CFG_DOUBLE
-#define STEP_MAX (SE23_R(DBL_MAX) / SE23_R(64))
-#else
-#define STEP_MAX (SE23_R(FLT_MAX) / SE23_R(64))
-#endif
-
 /* The sum of |x_i| of n reals (n a multiple of 3), a bound on each
  * (cheaper than their maximum on Cortex-M: no compare and move), three
  * at a time. */
@@ -113,7 +105,7 @@ static se23_real_t sum_abs(const se23_real_t *x, int n)
 
 /*
  * Nonzero if J+, the classical Jacobians and the Deltas of one step stay
- * below STEP_MAX (partial results included), for the increment U, the
+ * below SE23_COV_STEP_MAX (partial results included), for the increment U, the
  * corrected force f, dt and b (se23_input_blocks_bound): an O(n) bound
  * decides before anything is stored, as se23_cov_step_fits does for P+.
  * Rows of rotations sum to at most sqrt 3 < 2, |Jr| <= 1 (taken as 2),
@@ -143,7 +135,7 @@ static int rest_fits(const se23_preint_unc_t *fu, const se23_pose_t *U,
     const se23_real_t cb = ((mc + SE23_R(1)) * (SE23_R(2) + dt + (SE23_R(6) * f1 * (SE23_R(1) + dt)))) +
                            (SE23_R(2) * dt);
     const se23_real_t db = (md * (SE23_R(1) + dt)) + (SE23_R(2) * u);
-    return (jb <= STEP_MAX) && (cb <= STEP_MAX) && (db <= STEP_MAX);
+    return (jb <= SE23_COV_STEP_MAX) && (cb <= SE23_COV_STEP_MAX) && (db <= SE23_COV_STEP_MAX);
 }
 
 se23_status_t se23_preint_unc_add(se23_preint_unc_t *fu,
@@ -168,12 +160,8 @@ se23_status_t se23_preint_unc_add(se23_preint_unc_t *fu,
     if (st != SE23_OK) {
         return st;
     }
-    se23_imu_sample_t c; /* corrected inputs */
-    for (int i = 0; i < 3; ++i) {
-        c.w_ib_b.v[i] = s->w_ib_b.v[i] + fu->b_g.v[i];
-        c.f_b.v[i] = s->f_b.v[i] + fu->b_a.v[i];
-    }
-    c.dt = s->dt;
+    se23_imu_sample_t c;
+    se23_imu_sample_corrected(s, &fu->b_g, &fu->b_a, &c);
     const int tame = se23_sample_tame(&c); /* finite, and its increment too */
     if (tame == 0 && (!se23_all_finite(c.w_ib_b.v, 3) || !se23_all_finite(c.f_b.v, 3))) {
         return SE23_ERR_NONFINITE; /* finite reading + bias overflowed */
