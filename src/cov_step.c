@@ -27,7 +27,6 @@
  * last. Operation counts: cov_step_kernel.c. */
 #include "cov_step.h"
 
-
 #include "linalg.h"
 #include "se23_math.h"
 
