@@ -1,8 +1,9 @@
-/* Ready-made measurement models; see kalman.h. Each writes the residual
- * z = y - h(Tbar, bbar), the rows of H for the right-multiplied error and
- * R, and zeros in every entry beyond the m = 3 rows: every element of the
- * output exactly once (z 9, H 135, R 81 stores), so the output is fully
- * defined whatever the caller's buffer held. A residual or a Jacobian
+/* Ready-made measurement models; see kalman.h. Each writes m = 3, the
+ * residual z = y - h(Tbar, bbar), the three rows of H for the
+ * right-multiplied error (all 15 columns, zero blocks included) and R's
+ * leading 3x3 block: 3 + 45 + 9 stores. The entries beyond those rows,
+ * which se23_kalman_update never reads, are left as they are (clearing
+ * them cost more than the rest of the model). A residual or a Jacobian
  * entry that would overflow is refused before the first store. */
 #include "se23/kalman.h"
 
@@ -57,14 +58,6 @@ static void neg_r_skew(const se23_mat3_t *R, const se23_vec3_t *u,
     }
 }
 
-/* x[0..n-1] = 0 */
-static void zero(se23_real_t *x, int n)
-{
-    for (int i = 0; i < n; ++i) {
-        x[i] = SE23_R(0);
-    }
-}
-
 /* Rows 0..2, columns col..col+2 of H = A, or 0 if A is NULL. */
 static void put_block(se23_meas_t *y, int col, const se23_mat3_t *A)
 {
@@ -77,10 +70,9 @@ static void put_block(se23_meas_t *y, int col, const se23_mat3_t *A)
 }
 
 /* A 3-row measurement: m, z = meas - pred, R = cov, H = [blk[0], ...,
- * blk[4]] (blocks phi, nu, rho, b_g, b_a; NULL for a zero block), and zeros
- * in every entry beyond the three rows. Refuses (SE23_ERR_NONFINITE,
- * nothing written) a z or a block that overflowed; otherwise writes every
- * element once. */
+ * blk[4]] (blocks phi, nu, rho, b_g, b_a; NULL for a zero block); rows
+ * beyond the third are not touched. Refuses (SE23_ERR_NONFINITE, nothing
+ * written) a z or a block that overflowed. */
 static se23_status_t put3(const se23_vec3_t *meas, const se23_vec3_t *pred,
                           const se23_mat3_t *cov,
                           const se23_mat3_t *const *blk, se23_meas_t *y)
@@ -105,13 +97,6 @@ static se23_status_t put3(const se23_vec3_t *meas, const se23_vec3_t *pred,
             y->R[M * i + j] = cov->m[i][j];
         }
     }
-    /* The zeros, as contiguous runs: rows 3..8 of z and H; the columns
-     * 3..8 of R's rows 0 and 1, then row 2's through the end of R. */
-    zero(&y->z[3], M - 3);
-    zero(&y->H[3 * S], S * (M - 3));
-    zero(&y->R[3], M - 3);
-    zero(&y->R[M + 3], M - 3);
-    zero(&y->R[2 * M + 3], M * M - (2 * M + 3));
     return SE23_OK;
 }
 

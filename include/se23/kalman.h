@@ -58,8 +58,11 @@
  * (R^T vbar)^). Pair it with se23_meas_zero_rate to also observe the gyro
  * bias while standing still.
  *
- * All functions accept outputs that alias inputs. The models write every
- * element of their output (rows beyond m and the bias columns 0).
+ * All functions accept outputs that alias inputs. The models write m = 3,
+ * z[0..2], rows 0..2 of H (all 15 columns; the bias columns a model does
+ * not use are 0) and R's leading 3x3 block; the entries beyond m rows are
+ * left as they were, and se23_kalman_update reads only z[0..m-1], rows
+ * 0..m-1 of H and R's leading m x m block.
  */
 #ifndef SE23_KALMAN_H
 #define SE23_KALMAN_H

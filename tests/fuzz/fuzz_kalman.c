@@ -1,7 +1,8 @@
 /*
  * libFuzzer target of se23/kalman.h: the measurement models on decoded
  * poses, vectors and covariances (statuses in the header's set; on SE23_OK
- * every element of y finite, 1 <= m <= 9; on an error y untouched), and
+ * 1 <= m <= 9 and z, H and R finite in their m rows (the rest is not
+ * written, kalman.h); on an error y untouched), and
  * the update of a state that se23_gauss_check accepts (the state is
  * trusted) with a model's measurement or a decoded one (statuses in the
  * header's set; on SE23_OK the state passes se23_gauss_check, the NIS is
@@ -26,6 +27,7 @@ static void cov3_of(fz_t *f, se23_mat3_t *C)
 
 static void check_meas(se23_status_t st, const se23_meas_t *y, const char *what)
 {
+    int i;
     FZ_REQUIRE(fz_status_in(st, 4, SE23_ERR_NONFINITE, SE23_ERR_NOT_ROTATION,
                             SE23_ERR_NOT_SYMMETRIC, SE23_ERR_NOT_PSD),
                "%s: %d", what, st);
@@ -34,10 +36,12 @@ static void check_meas(se23_status_t st, const se23_meas_t *y, const char *what)
         return;
     }
     FZ_REQUIRE(y->m >= 1 && y->m <= SE23_MEAS_MMAX, "%s: m = %d", what, y->m);
-    FZ_REQUIRE(fz_finite(y->z, SE23_MEAS_MMAX) &&
-                   fz_finite(y->H, SE23_MEAS_MMAX * SE23_GAUSS_NMAX) &&
-                   fz_finite(y->R, SE23_MEAS_MMAX * SE23_MEAS_MMAX),
-               "%s: OK with a non-finite element", what);
+    FZ_REQUIRE(fz_finite(y->z, y->m) && fz_finite(y->H, y->m * SE23_GAUSS_NMAX),
+               "%s: OK with a non-finite z or H in its m rows", what);
+    for (i = 0; i < y->m; ++i) {
+        FZ_REQUIRE(fz_finite(&y->R[SE23_MEAS_MMAX * i], y->m), "%s: OK with a non-finite R",
+                   what);
+    }
 }
 
 /* A measurement from one of the models at T, or decoded; 0 if none was made. */

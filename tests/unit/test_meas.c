@@ -286,12 +286,12 @@ static void test_meas_zupt_and_zero_lever_are_vel_nav(void **state)
     memset(&b, SENTINEL, sizeof b);
     assert_int_equal(se23_meas_vel_nav_lever(&c.T, &c.w, &zero, &zero, &c.cov, &b), SE23_OK);
     assert_int_equal(b.m, a.m);
-    for (int i = 0; i < M; ++i) {
+    for (int i = 0; i < a.m; ++i) {
         assert_true(b.z[i] == a.z[i]);
         for (int j = 0; j < S; ++j) {
             assert_true(b.H[S * i + j] == a.H[S * i + j]);
         }
-        for (int j = 0; j < M; ++j) {
+        for (int j = 0; j < a.m; ++j) {
             assert_true(b.R[M * i + j] == a.R[M * i + j]);
         }
     }
@@ -408,34 +408,36 @@ static void test_meas_models_refuse_overflow_untouched(void **state)
     assert_memory_equal(&out, &out0, sizeof out);
 }
 
-/* Every element of the output is written: rows beyond m = 3 and the
- * untouched bias columns are zero whatever the buffer held. */
-static void test_meas_models_define_every_element(void **state)
+/* The models write m = 3, z, H and R in the three rows (the bias columns
+ * a model does not use 0, whatever the buffer held) and leave every entry
+ * beyond them as it was: se23_kalman_update reads only those. */
+static void test_meas_models_write_their_three_rows(void **state)
 {
     (void)state;
     se23t_rng_t rng;
+    se23_meas_t before;
+    memset(&before, SENTINEL, sizeof before);
     se23t_rng_seed(&rng, 703);
     for (int which = POS_NAV; which < N_MODELS; ++which) {
         const model_t w = (model_t)which;
         const int bias_cols = (w == VEL_NAV_LEVER || w == ZERO_RATE) ? SE23_IDX_BA : SE23_IDX_BG;
         case_t c;
-        se23_meas_t out;
+        se23_meas_t out = before;
         random_case(&rng, w, &c);
-        memset(&out, SENTINEL, sizeof out);
         assert_int_equal(call_model(w, &c, &out), SE23_OK);
+        assert_int_equal(out.m, 3);
         for (int i = 0; i < M; ++i) {
-            if (i >= 3) {
-                assert_true(out.z[i] == SE23_R(0));
-            }
+            const int row = i < 3;
+            assert_true(row ? isfinite(out.z[i]) : memcmp(&out.z[i], &before.z[i], sizeof out.z[i]) == 0);
             for (int j = 0; j < S; ++j) {
-                if (i >= 3 || j >= bias_cols) {
-                    assert_true(out.H[S * i + j] == SE23_R(0));
-                }
+                const se23_real_t h = out.H[S * i + j];
+                assert_true(!row ? memcmp(&h, &before.H[S * i + j], sizeof h) == 0
+                                 : (j >= bias_cols ? h == SE23_R(0) : isfinite(h)));
             }
             for (int j = 0; j < M; ++j) {
-                if (i >= 3 || j >= 3) {
-                    assert_true(out.R[M * i + j] == SE23_R(0));
-                }
+                const se23_real_t r = out.R[M * i + j];
+                assert_true((row && j < 3) ? r == c.cov.m[i][j]
+                                           : memcmp(&r, &before.R[M * i + j], sizeof r) == 0);
             }
         }
     }
@@ -599,7 +601,7 @@ int main(void)
         cmocka_unit_test(test_meas_zupt_and_zero_lever_are_vel_nav),
         cmocka_unit_test(test_meas_models_reject_bad_input_untouched),
         cmocka_unit_test(test_meas_models_refuse_overflow_untouched),
-        cmocka_unit_test(test_meas_models_define_every_element),
+        cmocka_unit_test(test_meas_models_write_their_three_rows),
         cmocka_unit_test(test_meas_cov_check_tolerance_boundaries),
         cmocka_unit_test(test_meas_zero_rate_update_estimates_gyro_bias),
         cmocka_unit_test(test_meas_vel_nav_lever_n9_ignores_bias_columns),
