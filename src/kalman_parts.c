@@ -115,25 +115,53 @@ static void cross_cov(const se23_real_t *P, const se23_meas_t *y, int n,
     }
 }
 
-/* Packed lower triangle of S = H C + R, reading the active rows of C and
- * the upper triangle of R: a m(m+1)/2 multiply-adds. */
+/* Packed lower triangle of S = H C + R, 3x3 blocks (rows q0..q0+2 of S,
+ * columns r0..r0+2, r0 <= q0) over the active rows of C (columns of H):
+ * 9 multiply-adds per active row and block, the three rows of H and of C
+ * streaming by while the block stays in registers; a m(m+1)/2 in all for
+ * m = 3 (the diagonal block's upper half is computed and dropped). Rows
+ * past m are H's zero padding and are not stored; R's upper triangle is
+ * read. */
+static void innovation_block(const se23_meas_t *y, const int *blk, int nb,
+                             const se23_real_t *C, int q0, int r0, se23_real_t *L)
+{
+    const se23_real_t *hr0 = h_row(y, r0), *hr1 = h_row(y, r0 + 1), *hr2 = h_row(y, r0 + 2);
+    se23_real_t s00 = SE23_R(0), s01 = SE23_R(0), s02 = SE23_R(0);
+    se23_real_t s10 = SE23_R(0), s11 = SE23_R(0), s12 = SE23_R(0);
+    se23_real_t s20 = SE23_R(0), s21 = SE23_R(0), s22 = SE23_R(0);
+    for (int k = 0; k < nb; ++k) {
+        for (int j = 3 * blk[k]; j < 3 * blk[k] + 3; ++j) {
+            /* C's rows 0..n-1, columns 0..padded(m)-1 are all written by
+             * cross_cov; the analyzer cannot follow the blocks. */
+            const se23_real_t *c = &C[M * j + q0];
+            const se23_real_t c0 = c[0], c1 = c[1], c2 = c[2]; // NOLINT(clang-analyzer-core.uninitialized.Assign)
+            const se23_real_t h0 = hr0[j], h1 = hr1[j], h2 = hr2[j];
+            s00 = se23_fma(c0, h0, s00);
+            s01 = se23_fma(c0, h1, s01);
+            s02 = se23_fma(c0, h2, s02);
+            s10 = se23_fma(c1, h0, s10);
+            s11 = se23_fma(c1, h1, s11);
+            s12 = se23_fma(c1, h2, s12);
+            s20 = se23_fma(c2, h0, s20);
+            s21 = se23_fma(c2, h1, s21);
+            s22 = se23_fma(c2, h2, s22);
+        }
+    }
+    const se23_real_t sb[3][3] = {{s00, s01, s02}, {s10, s11, s12}, {s20, s21, s22}};
+    for (int a = 0; a < 3; ++a) {
+        const int q = q0 + a;
+        for (int b = 0; (b < 3) && (r0 + b <= q) && (q < y->m); ++b) {
+            L[SE23_COV_TRI(q) + r0 + b] = sb[a][b] + y->R[M * (r0 + b) + q];
+        }
+    }
+}
+
 static void innovation_cov(const se23_meas_t *y, const int *blk, int nb,
                            const se23_real_t *C, se23_real_t *L)
 {
-    for (int q = 0; q < y->m; ++q) {
-        se23_real_t *lq = &L[SE23_COV_TRI(q)];
-        for (int r = 0; r <= q; ++r) {
-            const se23_real_t *h = &y->H[S * r];
-            se23_real_t s = y->R[M * r + q];
-            for (int k = 0; k < nb; ++k) {
-                const int j = 3 * blk[k];
-                /* C's rows 0..n-1, columns 0..padded(m)-1 are all written
-                 * by cross_cov; the analyzer cannot follow the blocks. */
-                s = se23_fma(h[j], C[M * j + q], s); // NOLINT(clang-analyzer-core.CallAndMessage)
-                s = se23_fma(h[j + 1], C[M * (j + 1) + q], s);
-                s = se23_fma(h[j + 2], C[M * (j + 2) + q], s);
-            }
-            lq[r] = s;
+    for (int q0 = 0; q0 < y->m; q0 += 3) {
+        for (int r0 = 0; r0 <= q0; r0 += 3) {
+            innovation_block(y, blk, nb, C, q0, r0, L);
         }
     }
 }
@@ -184,13 +212,13 @@ static void solve_u_block(const se23_real_t *L, int n, int m, int g, int h,
 
 /* In place over C: U = C L^-T (row i solves L u_i = c_i), three columns
  * at a time: the earlier columns' part, then the 3x3 triangle; padding
- * columns stay 0. Along the way dx = U w and the largest |u|^2 over rows
- * and groups of three columns (qmax; NaN stays NaN), so |U_i|^2 <= 3 qmax.
- * n m(m+1)/2 + 2 n m multiply-adds, n m multiplies. */
+ * columns stay 0. Along the way dx = U w and *usq = sum_i |U_i|^2 (NaN
+ * stays NaN), which bounds every |U_i|^2. n m(m+1)/2 + 2 n m
+ * multiply-adds, n m multiplies. */
 static void solve_u(const se23_real_t *L, const se23_real_t *w, int n, int m,
-                    se23_real_t *U, se23_real_t *dx, se23_real_t *qmax)
+                    se23_real_t *U, se23_real_t *dx, se23_real_t *usq)
 {
-    se23_real_t worst = SE23_R(0);
+    se23_real_t sum = SE23_R(0);
     for (int g = 0; g < padded(m); g += 3) {
         for (int h = 0; h < g; h += 3) {
             solve_u_block(L, n, m, g, h, U);
@@ -210,11 +238,10 @@ static void solve_u(const se23_real_t *L, const se23_real_t *w, int n, int m,
             c[2] = u2;
             const se23_real_t d = (g == 0) ? SE23_R(0) : dx[i];
             dx[i] = se23_fma(u2, w2, se23_fma(u1, w1, se23_fma(u0, w0, d)));
-            const se23_real_t q = se23_fma(u2, u2, se23_fma(u1, u1, u0 * u0));
-            worst = (q > worst || !se23_is_finite(q)) ? q : worst;
+            sum = se23_fma(u2, u2, se23_fma(u1, u1, se23_fma(u0, u0, sum)));
         }
     }
-    *qmax = worst;
+    *usq = sum;
 }
 
 /* Entry (i, j) and its mirror of src - U U^T for columns g..g+2 of U,
@@ -242,18 +269,25 @@ static void down_rows3(const se23_real_t *src, const se23_real_t *U, int i,
     down_entry(src, U, i, i, g, a, Pout);
     down_entry(src, U, i, i + 1, g, a, Pout);
     down_entry(src, U, i + 1, i + 1, g, b, Pout);
+    /* Rows i..i+2 left to right from column i + 2 (read at in[0], in[S],
+     * in[2 S], written at out[...]); the mirrors go down columns i..i+2. */
+    const se23_real_t *in = &src[S * i + i + 2], *u = &U[M * (i + 2) + g];
+    se23_real_t *out = &Pout[S * i + i + 2], *mirror = &Pout[S * (i + 2) + i];
     for (int j = i + 2; j < n; ++j) {
-        const se23_real_t *u = &U[M * j + g];
         const se23_real_t u0 = u[0], u1 = u[1], u2 = u[2];
-        const se23_real_t s = se23_fma(a[2], u2, se23_fma(a[1], u1, se23_fma(a[0], u0, src[S * i + j])));
-        const se23_real_t t = se23_fma(b[2], u2, se23_fma(b[1], u1, se23_fma(b[0], u0, src[S * (i + 1) + j])));
-        const se23_real_t v = se23_fma(c2, u2, se23_fma(c1, u1, se23_fma(c0, u0, src[S * (i + 2) + j])));
-        Pout[S * i + j] = s;
-        Pout[S * j + i] = s;
-        Pout[S * (i + 1) + j] = t;
-        Pout[S * j + i + 1] = t;
-        Pout[S * (i + 2) + j] = v;
-        Pout[S * j + i + 2] = v;
+        const se23_real_t e0 = se23_fma(a[2], u2, se23_fma(a[1], u1, se23_fma(a[0], u0, in[0])));
+        const se23_real_t e1 = se23_fma(b[2], u2, se23_fma(b[1], u1, se23_fma(b[0], u0, in[S])));
+        const se23_real_t e2 = se23_fma(c2, u2, se23_fma(c1, u1, se23_fma(c0, u0, in[2 * S])));
+        out[0] = e0;
+        out[S] = e1;
+        out[2 * S] = e2;
+        mirror[0] = e0;
+        mirror[1] = e1;
+        mirror[2] = e2;
+        in = &in[1];
+        out = &out[1];
+        u = &u[M];
+        mirror = &mirror[S];
     }
 }
 
@@ -274,16 +308,17 @@ static void downdate(const se23_real_t *P, const se23_real_t *U, int n, int m,
     }
 }
 
-/* Nonzero if every |dx_i| <= SE23_KALMAN_CORR_MAX and P_ii <= DIAG_MAX
- * (NaN fails). */
-static int in_range(const se23_real_t *P, const se23_real_t *dx, int n)
+/* tr P = sum_i P_ii (P PSD: it bounds every P_ii; NaN stays NaN), three
+ * partial sums (n = 9 or 15). */
+static se23_real_t trace(const se23_real_t *P, int n)
 {
-    for (int i = 0; i < n; ++i) {
-        if (!(se23_fabs(dx[i]) <= SE23_KALMAN_CORR_MAX) || !(P[S * i + i] <= DIAG_MAX)) {
-            return 0;
-        }
+    se23_real_t t0 = SE23_R(0), t1 = SE23_R(0), t2 = SE23_R(0);
+    for (int i = 0; i < n; i += 3) {
+        t0 += P[(S + 1) * i];
+        t1 += P[(S + 1) * (i + 1)];
+        t2 += P[(S + 1) * (i + 2)];
     }
-    return 1;
+    return (t0 + t1) + t2;
 }
 
 se23_status_t se23_kalman_cov(const se23_gauss_t *g, const se23_meas_t *y,
@@ -308,12 +343,16 @@ se23_status_t se23_kalman_cov(const se23_gauss_t *g, const se23_meas_t *y,
         w[r] = (r < m) ? y->z[r] : SE23_R(0);
     }
     forward(L, m, w);
-    se23_real_t q = SE23_R(0), qmax;
+    se23_real_t q = SE23_R(0), usq;
     for (int r = 0; r < m; ++r) {
         q = se23_fma(w[r], w[r], q);
     }
-    solve_u(L, w, n, m, U, dx, &qmax);
-    if (!se23_is_finite(q) || !(qmax <= DIAG_MAX / SE23_R(3)) || !in_range(g->P.m, dx, n)) {
+    solve_u(L, w, n, m, U, dx, &usq);
+    /* |dx_i| = |U_i . w| <= (|U_i|^2 q)^(1/2) <= (usq q)^(1/2) (Cauchy-
+     * Schwarz); usq and tr P bound |U_i|^2 and P_ii (DIAG_MAX). A product
+     * that overflows fails the test, as NaN does. */
+    if (!se23_is_finite(q) || !(usq <= DIAG_MAX) || !(trace(g->P.m, n) <= DIAG_MAX) ||
+        !(usq * q <= SE23_KALMAN_CORR_MAX * SE23_KALMAN_CORR_MAX)) {
         return SE23_ERR_NONFINITE;
     }
     /* Nothing fails from here on. */

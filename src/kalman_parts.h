@@ -59,9 +59,12 @@ se23_status_t se23_meas_cov_check(const se23_real_t *A, int m, int stride);
  * alias g->P.m), the correction dx (n values) and the NIS.
  * @return SE23_OK; SE23_ERR_NOT_PSD if S is not numerically positive
  *         definite (a pivot of its Cholesky factor not above 16 eps
- *         of its diagonal entry or below the smallest normal number); SE23_ERR_NONFINITE if a result would
- *         overflow (|dx_k| > SE23_KALMAN_CORR_MAX, the NIS, or an entry of
- *         P+). On error Pout and nis are not written (dx is scratch).
+ *         of its diagonal entry or below the smallest normal number);
+ *         SE23_ERR_NONFINITE if a result could overflow: the NIS, the bound
+ *         (tr(U U^T) NIS)^(1/2) of every |dx_k| above
+ *         SE23_KALMAN_CORR_MAX, or tr P or tr(U U^T) above a quarter of
+ *         the largest real (which keeps P+ finite). On error Pout and nis
+ *         are not written (dx is scratch).
  */
 se23_status_t se23_kalman_cov(const se23_gauss_t *g, const se23_meas_t *y,
                               unsigned mask, se23_real_t *dx, se23_real_t *nis,

@@ -100,9 +100,11 @@ typedef struct {
  *         pivot of its Cholesky factor not above 16 eps times its diagonal
  *         entry, or below the smallest normal number of the precision,
  *         e.g. P = 0 with a denormal R); SE23_ERR_NONFINITE if a result
- *         would overflow: the NIS, an entry of P+, a correction |dx_k|
- *         above 1e18 (float) / 1e150 (double), or a mean entry of g above
- *         a quarter of the largest finite value (or NaN). With
+ *         could overflow: the NIS; a correction, when the bound
+ *         (tr(K S K^T) NIS)^(1/2) of every |dx_k| is above 1e18 (float) /
+ *         1e150 (double); an entry of P+, when tr P or tr(K S K^T) is
+ *         above a quarter of the largest finite value; or a mean entry of
+ *         g above that quarter (or NaN). With
  *         SE23_CFG_DEEP_CHECKS also the statuses of se23_gauss_check.
  *         On error nothing is written (out, nis).
  */

@@ -200,6 +200,49 @@ static void test_cov_chol_packed_pivot_rules_both_ways(void **state)
     assert_false(se23_cov_chol_packed(L, 1));
 }
 
+/* The unrolled 3 x 3 factor (every measurement model's shape) is the
+ * loop's: the factor of a leading block is the leading block of the
+ * factor, so a 4 x 4 matrix around the 3 x 3 one (factored by the loop)
+ * must give the same verdict and, on success, the same bits. Random
+ * positive definite matrices, each pivot made zero, negative, denormal
+ * and NaN in turn. */
+static void test_cov_chol_packed_3x3_is_the_loop(void **state)
+{
+    (void)state;
+    se23t_rng_t rng;
+    se23t_rng_seed(&rng, 504);
+    int refused = 0;
+    for (int trial = 0; trial < 400; ++trial) {
+        se23_real_t A[S * S], L3[SE23_COV_TRI(3)], L4[SE23_COV_TRI(4)];
+        gt_random_cov(&rng, 4, 4, S, 1.0, 0.5, A);
+        pack_lower(A, 4, L4);
+        const int spoil = trial % 5; /* 0: none; 1..4: the kind below */
+        const int at = (trial / 5) % 3;
+        const se23_real_t d = spoil == 1 ? SE23_R(0) : spoil == 2 ? -SE23_R(1e-3)
+                            : spoil == 3 ? SE23_R(1e-40) : (se23_real_t)NAN;
+        if (spoil != 0) {
+            /* Pivot `at` becomes d: A_aa = sum of the squares before it + d. */
+            se23_real_t F[SE23_COV_TRI(4)];
+            memcpy(F, L4, sizeof F);
+            assert_true(se23_cov_chol_packed(F, 4));
+            se23_real_t sq = SE23_R(0);
+            for (int k = 0; k < at; ++k) {
+                sq += F[SE23_COV_TRI(at) + k] * F[SE23_COV_TRI(at) + k];
+            }
+            L4[SE23_COV_TRI(at) + at] = sq + d;
+        }
+        memcpy(L3, L4, sizeof L3);
+        const int ok3 = se23_cov_chol_packed(L3, 3);
+        const int ok4 = se23_cov_chol_packed(L4, 4);
+        refused += !ok3;
+        assert_int_equal(ok3, ok4);
+        if (ok3) {
+            assert_memory_equal(L3, L4, sizeof L3);
+        }
+    }
+    assert_true(refused >= 4 * 400 / 5 / 2); /* the spoiled pivots are seen */
+}
+
 /* The check with a small work buffer gives the same answers. */
 static void test_cov_check_work_matches_check(void **state)
 {
@@ -227,6 +270,7 @@ int main(void)
         cmocka_unit_test(test_cov_check_denormal_noise_around_zero),
         cmocka_unit_test(test_cov_chol_packed_factors),
         cmocka_unit_test(test_cov_chol_packed_pivot_rules_both_ways),
+        cmocka_unit_test(test_cov_chol_packed_3x3_is_the_loop),
         cmocka_unit_test(test_cov_check_work_matches_check),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
