@@ -95,9 +95,43 @@ int se23_cov_chol_packed(se23_real_t *L, int n)
     return 1;
 }
 
+/* se23_cov_check_work for n = 3 (every measurement model's noise): the
+ * loops below unrolled, the same tests on the same values (test_cov
+ * checks the statuses against a 4 x 4 matrix around A). */
+static se23_status_t check3(const se23_real_t *A, int stride, se23_real_t *work)
+{
+    const se23_real_t *a0 = A, *a1 = &A[stride], *a2 = &A[2 * stride];
+    se23_real_t bad = se23_fma(a0[0], SE23_R(0), se23_fma(a0[1], SE23_R(0), a0[2] * SE23_R(0)));
+    bad = se23_fma(a1[0], SE23_R(0), se23_fma(a1[1], SE23_R(0), se23_fma(a1[2], SE23_R(0), bad)));
+    bad = se23_fma(a2[0], SE23_R(0), se23_fma(a2[1], SE23_R(0), se23_fma(a2[2], SE23_R(0), bad)));
+    if (!se23_is_finite(bad)) {
+        return SE23_ERR_NONFINITE;
+    }
+    const se23_real_t d0 = se23_fabs(a0[0]), d1 = se23_fabs(a1[1]), d2 = se23_fabs(a2[2]);
+    const se23_real_t s01 = (d1 > d0) ? d1 : d0;
+    const se23_real_t s = (d2 > s01) ? d2 : s01;
+    const se23_real_t tol = SE23_R(SE23_CFG_COV_TOL) * s;
+    if ((se23_fabs(a1[0] - a0[1]) > tol) || (se23_fabs(a2[0] - a0[2]) > tol) ||
+        (se23_fabs(a2[1] - a1[2]) > tol)) {
+        return SE23_ERR_NOT_SYMMETRIC;
+    }
+    const se23_real_t k = (s > SCALE_ABOVE) ? SE23_R(0.25) : SE23_R(1);
+    const se23_real_t shift = (k * tol) + TINY;
+    work[0] = (k * a0[0]) + shift;
+    work[1] = k * a1[0];
+    work[2] = (k * a1[1]) + shift;
+    work[3] = k * a2[0];
+    work[4] = k * a2[1];
+    work[5] = (k * a2[2]) + shift;
+    return chol3(work) ? SE23_OK : SE23_ERR_NOT_PSD;
+}
+
 se23_status_t se23_cov_check_work(const se23_real_t *A, int n, int stride,
                                   se23_real_t *work)
 {
+    if (n == 3) {
+        return check3(A, stride, work);
+    }
     /* Finite: x * 0 is 0 for finite x and NaN for NaN or Inf. */
     se23_real_t bad = SE23_R(0), s = SE23_R(0);
     for (int i = 0; i < n; ++i) {

@@ -75,7 +75,8 @@ se23_status_t se23_kalman_cov(const se23_gauss_t *g, const se23_meas_t *y,
  * biases + dx_db (n = 15) or copied, n. Cannot fail for |dx_k| <=
  * SE23_KALMAN_CORR_MAX and mean entries within SE23_KALMAN_MEAN_MAX:
  * every value stays finite, and R exp(phi^) is within SE23_CFG_ROT_TOL + a
- * few eps of SO(3), which se23_so3_normalize repairs. out may alias g
+ * few eps of SO(3), which one Newton-Schulz step brings back to rounding
+ * level. out may alias g
  * (its P is not touched).
  */
 void se23_kalman_retract(const se23_gauss_t *g, const se23_real_t *dx,

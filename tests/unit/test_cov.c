@@ -243,6 +243,60 @@ static void test_cov_chol_packed_3x3_is_the_loop(void **state)
     assert_true(refused >= 4 * 400 / 5 / 2); /* the spoiled pivots are seen */
 }
 
+/* The unrolled 3 x 3 check is the loop's: A and the 4 x 4 matrix
+ * diag(A, s), s = max |A_ii| (same tolerance, one more pivot that always
+ * passes), get the same status, for clean matrices and for matrices with
+ * an asymmetry or an eigenvalue either side of the tolerance, a NaN or an
+ * Inf, at unit scale and above the rescaling threshold. */
+static void test_cov_check_3x3_is_the_loop(void **state)
+{
+    (void)state;
+    se23t_rng_t rng;
+    se23t_rng_seed(&rng, 505);
+    int seen[SE23_ERR_NOT_PSD + 1] = {0};
+    const se23_real_t tol = SE23_R(SE23_CFG_COV_TOL);
+    for (int trial = 0; trial < 600; ++trial) {
+        se23_real_t A[S * S] = {0}, B[S * S] = {0}, w3[SE23_COV_TRI(3)], w4[SE23_COV_TRI(4)];
+        gt_random_cov(&rng, 3, 2 + trial % 2, S, 1.0, 0.0, A);
+        const se23_real_t big = (trial % 7 == 0) ? SE23_R(FLT_MAX) / SE23_R(3) : SE23_R(1);
+        for (int i = 0; i < 3; ++i) {
+            for (int j = 0; j < 3; ++j) {
+                A[S * i + j] *= big;
+            }
+        }
+        const se23_real_t s = fmax(fmax(A[0], A[S + 1]), A[2 * S + 2]);
+        const int r = 1 + (trial / 5) % 2, c = (trial / 10) % r;
+        switch (trial % 5) {
+        case 1: /* asymmetric by 0.5 or 2 tol s */
+            A[S * r + c] += ((trial / 3) % 2 ? SE23_R(0.5) : SE23_R(2)) * tol * s;
+            break;
+        case 2: /* axis r decoupled, its eigenvalue -0.5 or -2 tol s */
+            for (int k = 0; k < 3; ++k) {
+                A[S * r + k] = SE23_R(0);
+                A[S * k + r] = SE23_R(0);
+            }
+            A[S * r + r] = -((trial / 3) % 2 ? SE23_R(0.5) : SE23_R(2)) * tol * s;
+            break;
+        case 3:
+            A[S * r + c] = (trial / 3) % 2 ? (se23_real_t)NAN : (se23_real_t)INFINITY;
+            break;
+        default:
+            break;
+        }
+        for (int i = 0; i < 3; ++i) {
+            for (int j = 0; j < 3; ++j) {
+                B[S * i + j] = A[S * i + j];
+            }
+        }
+        B[S * 3 + 3] = fmax(fmax(fabs(A[0]), fabs(A[S + 1])), fabs(A[2 * S + 2]));
+        const se23_status_t st = se23_cov_check_work(A, 3, S, w3);
+        assert_int_equal(st, se23_cov_check_work(B, 4, S, w4));
+        ++seen[st];
+    }
+    assert_true(seen[SE23_OK] > 0 && seen[SE23_ERR_NONFINITE] > 0 &&
+                seen[SE23_ERR_NOT_SYMMETRIC] > 0 && seen[SE23_ERR_NOT_PSD] > 0);
+}
+
 /* The check with a small work buffer gives the same answers. */
 static void test_cov_check_work_matches_check(void **state)
 {
@@ -271,6 +325,7 @@ int main(void)
         cmocka_unit_test(test_cov_chol_packed_factors),
         cmocka_unit_test(test_cov_chol_packed_pivot_rules_both_ways),
         cmocka_unit_test(test_cov_chol_packed_3x3_is_the_loop),
+        cmocka_unit_test(test_cov_check_3x3_is_the_loop),
         cmocka_unit_test(test_cov_check_work_matches_check),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
