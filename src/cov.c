@@ -65,11 +65,9 @@ static int chol3(se23_real_t *L)
     return 1;
 }
 
-int se23_cov_chol_packed(se23_real_t *L, int n)
+/* se23_cov_chol_packed for any n. */
+static int chol_loop(se23_real_t *L, int n)
 {
-    if (n == 3) {
-        return chol3(L);
-    }
     se23_real_t *lj = L; /* row j; row j + 1 starts j + 1 entries later */
     for (int j = 0; j < n; ++j) {
         se23_real_t d = lj[j];
@@ -93,6 +91,11 @@ int se23_cov_chol_packed(se23_real_t *L, int n)
         lj = &lj[j + 1];
     }
     return 1;
+}
+
+int se23_cov_chol_packed(se23_real_t *L, int n)
+{
+    return (n == 3) ? chol3(L) : chol_loop(L, n);
 }
 
 /* se23_cov_check_work for n = 3 (every measurement model's noise): the
@@ -126,12 +129,10 @@ static se23_status_t check3(const se23_real_t *A, int stride, se23_real_t *work)
     return chol3(work) ? SE23_OK : SE23_ERR_NOT_PSD;
 }
 
-se23_status_t se23_cov_check_work(const se23_real_t *A, int n, int stride,
-                                  se23_real_t *work)
+/* se23_cov_check_work for any n. */
+static se23_status_t check_loop(const se23_real_t *A, int n, int stride,
+                                se23_real_t *work)
 {
-    if (n == 3) {
-        return check3(A, stride, work);
-    }
     /* Finite: x * 0 is 0 for finite x and NaN for NaN or Inf. */
     se23_real_t bad = SE23_R(0), s = SE23_R(0);
     for (int i = 0; i < n; ++i) {
@@ -160,7 +161,13 @@ se23_status_t se23_cov_check_work(const se23_real_t *A, int n, int stride,
         li[i] = (k * a[i]) + shift;
         li = &li[i + 1];
     }
-    return se23_cov_chol_packed(work, n) ? SE23_OK : SE23_ERR_NOT_PSD;
+    return chol_loop(work, n) ? SE23_OK : SE23_ERR_NOT_PSD;
+}
+
+se23_status_t se23_cov_check_work(const se23_real_t *A, int n, int stride,
+                                  se23_real_t *work)
+{
+    return (n == 3) ? check3(A, stride, work) : check_loop(A, n, stride, work);
 }
 
 se23_status_t se23_cov_check(const se23_real_t *A, int n, int stride)
