@@ -280,6 +280,7 @@ static int clock_stepped_back(se23_ins_t *ins, int64_t t_ns, int64_t seq)
     ins->t_ns = t_ns;
     ins->seq = seq;
     ins->max_seq = seq;
+    ins->last.dt = SE23_R(0); /* not a reading at the next interval's start: no interpolation */
     ins->last_fix_ns = -1;
     ins->have_pending = 0;
     ins->status |= SE23_INS_ST_DEGRADED;
@@ -429,13 +430,14 @@ static se23_ins_verdict_t accept(se23_ins_t *ins, int64_t t_ns, int64_t seq,
                                  const se23_imu_sample_t *s)
 {
     const int rest = rest_level(ins, s, t_ns - ins->t_ns);
+    const se23_imu_sample_t prev = ins->last;
     if (se23_ins_step(ins, t_ns, s, rest) == 0) {
         return SE23_INS_FAILED;
     }
     ins->streak = 0;
     ins->seq = seq;
     se23_ins_count(&ins->c.imu_used);
-    se23_ins_factor_add(ins, s);
+    se23_ins_factor_add(ins, &prev, s);
     se23_ins_ring_push(ins, s, rest);
     service_pending(ins);
     return SE23_INS_USED;

@@ -54,8 +54,23 @@ int se23_ins_predict(se23_ins_t *ins, const se23_imu_sample_t *s);
  */
 int se23_ins_step(se23_ins_t *ins, int64_t t_ns, const se23_imu_sample_t *s, int rest);
 
-/** Adds an accepted live sample to the preintegrated factor. */
-void se23_ins_factor_add(se23_ins_t *ins, const se23_imu_sample_t *s);
+/**
+ * The sub-intervals sample s is integrated in after the reading prev
+ * (ins.h, "Lost samples"): 1, or round(s->dt / dt_nominal) up to
+ * SE23_INS_GAP_STEPS when s follows lost samples and prev is a reading.
+ */
+int se23_ins_gap_steps(const se23_ins_t *ins, const se23_imu_sample_t *prev,
+                       const se23_imu_sample_t *s);
+
+/** u = sub-interval j (1..n) of s after prev: the reading interpolated
+ *  linearly at its end, dt = s->dt / n (u = s but for dt when j = n). */
+void se23_ins_gap_sample(const se23_imu_sample_t *prev, const se23_imu_sample_t *s, int j,
+                         int n, se23_imu_sample_t *u);
+
+/** Adds an accepted live sample (after the reading prev) to the
+ *  preintegrated factor, in the prediction's sub-intervals. */
+void se23_ins_factor_add(se23_ins_t *ins, const se23_imu_sample_t *prev,
+                         const se23_imu_sample_t *s);
 
 /** Restarts the preintegrated factor at the current state. */
 void se23_ins_factor_reset(se23_ins_t *ins);

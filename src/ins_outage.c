@@ -91,6 +91,7 @@ se23_ins_verdict_t se23_ins_over_gap(se23_ins_t *ins, int64_t t_ns, int64_t seq)
         return SE23_INS_OUTAGE;
     }
     carry_across(ins, gap);
+    ins->last.dt = SE23_R(0); /* not a reading at the next interval's start: no interpolation */
     count_lost(ins, t_ns, seq);
     ins->t_ns = t_ns;
     ins->seq = seq;

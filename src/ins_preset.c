@@ -84,9 +84,15 @@ se23_status_t se23_ins_preset_foot(se23_real_t rate_hz, se23_real_t lat,
     c.detector.gravity = g;
     c.detector.threshold = se23_ins_detector_threshold(c.detector.window, Z_099);
     /* v = 0 to 2 cm/s: a foot turning at 10 deg/s about a contact point
-     * ~0.1 m from the sensor. ZARU at the gyro's noise, once the foot has
-     * rested 0.5 s (7x the longest stance): in a stance it still turns. */
-    c.zupt_sigma_v = SE23_R(0.02);
+     * ~0.1 m from the sensor. That residual motion changes over tens of
+     * ms, so it is the same in every sample of a detector window (on the
+     * x-io walk the ZUPT innovations' autocorrelation at one window's lag
+     * is 0.99): the W updates of a window are one measurement of 2 cm/s,
+     * not W, and each sample's update gets 2 cm/s x sqrt(W) (W updates of
+     * variance W s^2 carry the information of one of s^2). ZARU at the
+     * gyro's noise, once the foot has rested 0.5 s (7x the longest
+     * stance): in a stance it still turns. */
+    c.zupt_sigma_v = SE23_R(0.02) * se23_sqrt((se23_real_t)c.detector.window);
     c.zaru_sigma_w = c.noise.gyro_noise * se23_sqrt(rate_hz);
     c.zaru_after = SE23_R(0.5);
     /* Alignment: the first second at rest; the start defines the frame

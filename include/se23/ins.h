@@ -37,6 +37,22 @@
  * over-gap sample's seq is judged when an outage is confirmed (the seq
  * skipped before it are lost samples if the time gap could hold them).
  *
+ * Lost samples. A sample whose interval dt (at most max_gap) spans
+ * n = round(dt / dt_nominal) >= 2 nominal intervals follows n - 1 samples
+ * lost in transit. Holding its reading over the whole interval would give
+ * the lost samples the value at the gap's end (a swinging foot's rate
+ * changes by hundreds of deg/s within the 7.5 ms of three intervals, and
+ * the heading error this leaves is never corrected); the filter instead
+ * integrates the interval in n equal sub-intervals whose readings are the
+ * linear interpolation between the last accepted reading and this one (the
+ * lost samples' best estimate from the two that bracket them; both are
+ * known when this sample arrives: causal), each held over its sub-interval
+ * as a received sample is. At most SE23_INS_GAP_STEPS sub-intervals (a larger
+ * n is interpolated more coarsely); none without a reading at the
+ * interval's start (the first sample after init, alignment, an outage or
+ * a clock step). The preintegrated factor integrates the same
+ * sub-intervals.
+ *
  * Outage. When SE23_INS_OUTAGE_CONFIRM consecutive samples all have
  * dt > max_gap but agree among themselves (consecutive seq, dt <= max_gap
  * between them), the stream jumped forward: the state is carried across by
@@ -150,6 +166,12 @@ extern "C" {
 /** Samples the delayed-fix ring holds (compile-time; see file comment). */
 #ifndef SE23_INS_RING
 #define SE23_INS_RING 128
+#endif
+
+/** Most sub-intervals one sample after lost ones is integrated in (ins.h,
+ *  "Lost samples"): bounds the predictions of one call. */
+#ifndef SE23_INS_GAP_STEPS
+#define SE23_INS_GAP_STEPS 32
 #endif
 
 /** Consecutive consistent over-gap samples that confirm an outage. */
