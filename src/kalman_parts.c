@@ -3,7 +3,7 @@
  * Cost. Only the active 3-column blocks of H take part (a = 3 x their
  * number). With m rows and n states, in fused multiply-adds:
  *   C  = P H^T             n m a        (active columns of P and H)
- *   S  = H C + R           a m(m+1)/2   (active rows of C)
+ *   S  = H C + R           a m^2        (active rows of C, 3x3 blocks)
  *   L L^T = S              m^3/6, m square roots and divisions
  *   w  = L^-1 z            m^2/2;  nis = w.w, m
  *   U  = C L^-T            n m(m-1)/2, n m multiplies
@@ -11,7 +11,7 @@
  *   P+ = P - U U^T         m n(n+1)/2   (upper triangle, mirrored)
  * The kernels take m three rows at a time (zero padding), so m counts as
  * a multiple of 3 in the n-sized terms. GNSS position with a lever arm
- * (n = 15, m = 3, a = 6): 270 + 36 + 10 + 9 + 45 + 90 + 360 = 820
+ * (n = 15, m = 3, a = 6): 270 + 54 + 10 + 9 + 45 + 90 + 360 = 838
  * multiply-adds and 3 square roots; the dense Joseph form with the same
  * factorisation is about 2 n^3 + 4 n^2 m = 9,500.
  *
