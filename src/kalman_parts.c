@@ -116,9 +116,9 @@ static void cross_cov(const se23_real_t *P, const se23_meas_t *y, int n,
 
 /* Packed lower triangle of S = H C + R, 3x3 blocks (rows q0..q0+2 of S,
  * columns r0..r0+2, r0 <= q0) over the active rows of C (columns of H):
- * 9 multiply-adds per active row and block, the three rows of H and of C
- * streaming by while the block stays in registers; a m(m+1)/2 in all for
- * m = 3 (the diagonal block's upper half is computed and dropped). Rows
+ * 9 multiply-adds per active row of C and block, the three rows of H and
+ * of C streaming by while the block stays in registers: a m^2 for m = 3
+ * (the diagonal block's upper half is computed and dropped). Rows
  * past m are H's zero padding and are not stored; R's upper triangle is
  * read. */
 static void innovation_block(const se23_meas_t *y, const int *blk, int nb,
