@@ -663,9 +663,11 @@ static inline int fz_check_cov_step(const se23_gauss_t *g, double bound, const c
  * [[F_k, B_k], [0, I]] of the increment U over dt, b the largest absolute
  * row sum of B_k, q the largest noise term (density^2 / dt) and w the
  * largest walk term: per entry a few eps of |Phi| |P| |Phi|^T (rows of Phi
- * sum to at most r, cov_step.c), plus the input's own tolerance
- * (SE23_CFG_COV_TOL of its largest variance) carried through Phi, times n
- * for the spectral norm.
+ * sum to at most r, cov_step.c), plus the input's own tolerance carried
+ * through Phi: the check admits P + (SE23_CFG_COV_TOL s + 2 FLT_MIN) I
+ * (cov.h), s its largest variance, so both the relative and the absolute
+ * part (a variance of -1e-202 passes; a step with |v| = 1e114 turns it
+ * into -5e26), times n for the spectral norm.
  */
 static inline double fz_step_bound(const se23_pose_t *U, double dt, double b, double q, double w,
                                    const se23_real_t *P, int n, int stride)
@@ -675,7 +677,8 @@ static inline double fz_step_bound(const se23_pose_t *U, double dt, double b, do
                      fabs((double)U->p.v[1]) + fabs((double)U->p.v[2]);
     const double r = 2.0 * (g + b) + 1.0, d = fz_max_diag(P, n, stride);
     const double e = 32.0 * FZ_EPS;
-    return (double)n * ((e + SE23_CFG_COV_TOL) * r * r * d + e * (4.0 * q * b * b + w));
+    return (double)n * (((e + SE23_CFG_COV_TOL) * d + 2.0 * FLT_MIN) * r * r +
+                        e * (4.0 * q * b * b + w));
 }
 
 /** The largest absolute row sum of a 9x6 B. */
