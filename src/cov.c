@@ -14,11 +14,11 @@
 #else
 #define PIVOT_MIN FLT_MIN
 #endif
-/* Added to the PSD shift of the check so that the zero matrix passes, and
- * a matrix of denormal rounding noise around it (a diagonal of -1e-45 in
- * float): twice PIVOT_MIN in float, so that a pivot of TINY plus such a
- * diagonal still reaches PIVOT_MIN. */
-#define TINY (SE23_R(2) * SE23_R(FLT_MIN))
+/* SE23_COV_ABS_TOL (cov.h), added to the PSD shift of the check so that
+ * the zero matrix passes, and a matrix of denormal rounding noise around
+ * it (a diagonal of -1e-45 in float): twice PIVOT_MIN in float, so that a
+ * pivot of TINY plus such a diagonal still reaches PIVOT_MIN. */
+#define TINY SE23_COV_ABS_TOL
 /* Above this largest variance the check factors A / 4 (exact: a power of
  * two), so that A_ii + tol s cannot overflow; the tests are scale-free. */
 #if SE23_CFG_DOUBLE

@@ -11,8 +11,16 @@
 #ifndef SE23_COV_H
 #define SE23_COV_H
 
+#include <float.h>
+
 #include "se23/gauss.h"
 #include "se23/types.h"
+
+/** The absolute part of the checks' PSD tolerance (se23_cov_check_work):
+ *  twice the smallest normal float, in both precisions. A step that
+ *  multiplies a checked covariance by a large factor multiplies this
+ *  slack too (se23_cov_step_fits). */
+#define SE23_COV_ABS_TOL (SE23_R(2) * SE23_R(FLT_MIN))
 
 /** Reals of a packed lower triangle of n rows. */
 #define SE23_COV_TRI(n) ((n) * ((n) + 1) / 2)

@@ -27,6 +27,7 @@
  * last. Operation counts: cov_step_kernel.c. */
 #include "cov_step.h"
 
+#include "cov.h"
 #include "linalg.h"
 #include "se23_math.h"
 
@@ -137,11 +138,15 @@ se23_real_t se23_input_blocks_row_sum(const se23_input_blocks_t *Bt)
     return b;
 }
 
-/* sum_i |P_ii| (n a multiple of 3), at least the largest variance: for a
- * PSD P (trusted) a bound on every |P_ij|, cheaper than the maximum. */
+/* SE23_COV_ABS_TOL + sum_i |P_ii| (n a multiple of 3), at least the
+ * largest variance: for a PSD P (trusted) a bound on every |P_ij|, cheaper
+ * than the maximum. The check's absolute slack is part of it: a checked P
+ * may have a variance of -SE23_COV_ABS_TOL, which a step scales like the
+ * rest (a step whose gain squared is ~1e300 would turn it into a variance
+ * of -1e262: refused by the bound instead). */
 static se23_real_t variance_bound(int n, const se23_real_t *P, int stride)
 {
-    se23_real_t d = SE23_R(0);
+    se23_real_t d = SE23_COV_ABS_TOL;
     for (int i = 0; i < n; i += 3) {
         const se23_real_t *p = &P[stride * i + i];
         d += se23_fabs(p[0]) + se23_fabs(p[stride + 1]) + se23_fabs(p[(2 * stride) + 2]);

@@ -451,6 +451,33 @@ static void test_gauss_cov_propagate_rejects_bad_input_untouched(void **state)
     assert_memory_equal(&out, &out0, sizeof out);
 }
 
+/* Fuzzing (tests/fuzz/corpus/gauss/known-*): the covariance check admits
+ * a variance down to -SE23_COV_ABS_TOL (twice the smallest normal float),
+ * and a step scales that slack by its gain squared: a variance of -1e-250
+ * (double; -1e-40 in float) through |v| = 1e172 (1e37) came back as about
+ * -1e94 (-1e34) with SE23_OK. The step's bound counts the slack and
+ * refuses it; nothing is written. */
+static void test_gauss_cov_propagate_refuses_an_amplified_tolerance(void **state)
+{
+    (void)state;
+    se23_pose_t U;
+    se23_mat9_t S0 = {{0}}, Q0 = {{0}}, out, out0;
+    memset(&out, 0x5a, sizeof out);
+    out0 = out;
+    se23_identity(&U);
+#if SE23_CFG_DOUBLE
+    S0.m[0] = SE23_R(-1e-250);
+    U.v.v[1] = SE23_R(1e172);
+#else
+    S0.m[0] = SE23_R(-1e-40);
+    U.v.v[1] = SE23_R(1e37);
+#endif
+    assert_int_equal(se23_cov_check(S0.m, 9, 9), SE23_OK);
+    assert_int_equal(se23_gauss_cov_propagate(&S0, &U, SE23_R(0.01), &Q0, &out),
+                     SE23_ERR_NONFINITE);
+    assert_memory_equal(&out, &out0, sizeof out);
+}
+
 /* ------------------------------------------------------------ gauss_t */
 
 static void test_gauss_propagate_matches_dense_with_and_without_biases(void **state)
@@ -1005,6 +1032,7 @@ int main(void)
         cmocka_unit_test(test_gauss_cov_propagate_matches_dense_and_is_symmetric),
         cmocka_unit_test(test_gauss_cov_propagate_output_may_alias_inputs),
         cmocka_unit_test(test_gauss_cov_propagate_rejects_bad_input_untouched),
+        cmocka_unit_test(test_gauss_cov_propagate_refuses_an_amplified_tolerance),
         cmocka_unit_test(test_gauss_propagate_matches_dense_with_and_without_biases),
         cmocka_unit_test(test_gauss_check_reports_each_defect),
         cmocka_unit_test(test_gauss_propagate_rejects_bad_input_untouched),
