@@ -1,23 +1,14 @@
-/* Covariance checks and the packed Cholesky factor; see cov.h. */
+/* Covariance checks; see cov.h (the factor they use: cov_chol.h). */
 #include "cov.h"
 
 #include <float.h>
 
 #include "se23_math.h"
 
-/* A pivot must exceed PIVOT_EPS A_jj ... */
-#define PIVOT_EPS (SE23_R(16) * SE23_EPSILON)
-/* ... and be at least the smallest normal number: below it the pivot has
- * lost relative precision and 1 / sqrt(pivot) may overflow. */
-#if SE23_CFG_DOUBLE
-#define PIVOT_MIN DBL_MIN
-#else
-#define PIVOT_MIN FLT_MIN
-#endif
 /* SE23_COV_ABS_TOL (cov.h), added to the PSD shift of the check so that
  * the zero matrix passes, and a matrix of denormal rounding noise around
- * it (a diagonal of -1e-45 in float): twice PIVOT_MIN in float, so that a
- * pivot of TINY plus such a diagonal still reaches PIVOT_MIN. */
+ * it (a diagonal of -1e-45 in float): twice SE23_CHOL_PIVOT_MIN in float,
+ * so that a pivot of TINY plus such a diagonal still reaches it. */
 #define TINY SE23_COV_ABS_TOL
 /* Above this largest variance the check factors A / 4 (exact: a power of
  * two), so that A_ii + tol s cannot overflow; the tests are scale-free. */
@@ -26,77 +17,6 @@
 #else
 #define SCALE_ABOVE SE23_R(FLT_MAX / 4)
 #endif
-
-/* A pivot d of the factorisation is usable against its diagonal entry a. */
-static int pivot_ok(se23_real_t d, se23_real_t a)
-{
-    return (d > (PIVOT_EPS * a)) && (d >= PIVOT_MIN) && se23_is_finite(d);
-}
-
-/* se23_cov_chol_packed for n = 3, the shape of every measurement model's
- * noise and innovation covariance: the loops below unrolled, the same
- * operations in the same order (bit-identical results; test_cov checks
- * it against the leading block of a 4 x 4 factor). 3 multiply-adds,
- * 3 multiplies, 3 square roots and divisions. */
-static int chol3(se23_real_t *L)
-{
-    const se23_real_t d0 = L[0];
-    if (!pivot_ok(d0, L[0])) {
-        return 0;
-    }
-    const se23_real_t i0 = SE23_R(1) / se23_sqrt(d0);
-    const se23_real_t l10 = L[1] * i0, l20 = L[3] * i0;
-    const se23_real_t d1 = se23_fma(-l10, l10, L[2]);
-    if (!pivot_ok(d1, L[2])) {
-        return 0;
-    }
-    const se23_real_t i1 = SE23_R(1) / se23_sqrt(d1);
-    const se23_real_t l21 = se23_fma(-l20, l10, L[4]) * i1;
-    const se23_real_t d2 = se23_fma(-l21, l21, se23_fma(-l20, l20, L[5]));
-    if (!pivot_ok(d2, L[5])) {
-        return 0;
-    }
-    L[0] = i0;
-    L[1] = l10;
-    L[2] = i1;
-    L[3] = l20;
-    L[4] = l21;
-    L[5] = SE23_R(1) / se23_sqrt(d2);
-    return 1;
-}
-
-/* se23_cov_chol_packed for any n. */
-static int chol_loop(se23_real_t *L, int n)
-{
-    se23_real_t *lj = L; /* row j; row j + 1 starts j + 1 entries later */
-    for (int j = 0; j < n; ++j) {
-        se23_real_t d = lj[j];
-        for (int k = 0; k < j; ++k) {
-            d = se23_fma(-lj[k], lj[k], d);
-        }
-        if (!pivot_ok(d, lj[j])) {
-            return 0;
-        }
-        const se23_real_t inv = SE23_R(1) / se23_sqrt(d);
-        lj[j] = inv;
-        se23_real_t *li = &lj[j + 1];
-        for (int i = j + 1; i < n; ++i) {
-            se23_real_t s = li[j];
-            for (int k = 0; k < j; ++k) {
-                s = se23_fma(-li[k], lj[k], s);
-            }
-            li[j] = s * inv;
-            li = &li[i + 1];
-        }
-        lj = &lj[j + 1];
-    }
-    return 1;
-}
-
-int se23_cov_chol_packed(se23_real_t *L, int n)
-{
-    return (n == 3) ? chol3(L) : chol_loop(L, n);
-}
 
 /* se23_cov_check_work for n = 3 (every measurement model's noise): the
  * loops below unrolled, the same tests on the same values (test_cov
@@ -126,7 +46,7 @@ static se23_status_t check3(const se23_real_t *A, int stride, se23_real_t *work)
     work[3] = k * a2[0];
     work[4] = k * a2[1];
     work[5] = (k * a2[2]) + shift;
-    return chol3(work) ? SE23_OK : SE23_ERR_NOT_PSD;
+    return se23_chol3(work) ? SE23_OK : SE23_ERR_NOT_PSD;
 }
 
 /* se23_cov_check_work for any n. */
@@ -161,7 +81,7 @@ static se23_status_t check_loop(const se23_real_t *A, int n, int stride,
         li[i] = (k * a[i]) + shift;
         li = &li[i + 1];
     }
-    return chol_loop(work, n) ? SE23_OK : SE23_ERR_NOT_PSD;
+    return se23_chol_loop(work, n) ? SE23_OK : SE23_ERR_NOT_PSD;
 }
 
 se23_status_t se23_cov_check_work(const se23_real_t *A, int n, int stride,

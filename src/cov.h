@@ -13,6 +13,7 @@
 
 #include <float.h>
 
+#include "cov_chol.h"
 #include "se23/gauss.h"
 #include "se23/types.h"
 
@@ -25,16 +26,6 @@
 /** Reals of a packed lower triangle of n rows. */
 #define SE23_COV_TRI(n) ((n) * ((n) + 1) / 2)
 
-/**
- * In place: L holds the packed lower triangle of a symmetric n x n A on
- * entry, its lower Cholesky factor on exit, except that the diagonal holds
- * the reciprocals 1 / L_jj (what the solves need). Refused (returns 0, L
- * then unspecified) unless every pivot is finite, exceeds 16 eps A_jj and
- * is at least the smallest normal number of the precision (so that 1/L_jj
- * is finite and accurate); NaN is refused. n^3/6 multiply-adds, n square
- * roots and divisions.
- */
-int se23_cov_chol_packed(se23_real_t *L, int n);
 
 /**
  * Checks the leading n x n block of A: finite, symmetric
