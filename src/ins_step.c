@@ -30,12 +30,12 @@ int se23_ins_gap_steps(const se23_ins_t *ins, const se23_imu_sample_t *prev,
 void se23_ins_gap_sample(const se23_imu_sample_t *prev, const se23_imu_sample_t *s, int j,
                          int n, se23_imu_sample_t *u)
 {
-    const se23_real_t a = (se23_real_t)j / (se23_real_t)n;
-    se23_vec3_t dw, df;
-    se23_v3_axpy(&s->w_ib_b, SE23_R(-1), &prev->w_ib_b, &dw);
-    se23_v3_axpy(&s->f_b, SE23_R(-1), &prev->f_b, &df);
     *u = *s;
     if (j < n) {
+        const se23_real_t a = (se23_real_t)j / (se23_real_t)n;
+        se23_vec3_t dw, df;
+        se23_v3_axpy(&s->w_ib_b, SE23_R(-1), &prev->w_ib_b, &dw);
+        se23_v3_axpy(&s->f_b, SE23_R(-1), &prev->f_b, &df);
         se23_v3_axpy(&prev->w_ib_b, a, &dw, &u->w_ib_b);
         se23_v3_axpy(&prev->f_b, a, &df, &u->f_b);
     }
@@ -109,12 +109,12 @@ void se23_ins_factor_reset(se23_ins_t *ins)
 void se23_ins_factor_add(se23_ins_t *ins, const se23_imu_sample_t *prev,
                          const se23_imu_sample_t *s)
 {
-    const int n = se23_ins_gap_steps(ins, prev, s);
     se23_imu_sample_t u;
-    int j;
+    int n, j;
     if (ins->cfg.preint_window <= SE23_R(0)) {
         return;
     }
+    n = se23_ins_gap_steps(ins, prev, s);
     /* the same sub-intervals as the filter's prediction */
     for (j = 1; j <= n; ++j) {
         se23_ins_gap_sample(prev, s, j, n, &u);
