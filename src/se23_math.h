@@ -12,7 +12,6 @@
 #include <math.h>
 
 #include "se23/types.h"
-#include "trig.h"
 
 #if SE23_CFG_DOUBLE
 #define SE23_LIBM(fn) fn
@@ -23,13 +22,11 @@
 #ifndef SE23_SQRT
 #define SE23_SQRT SE23_LIBM(sqrt)
 #endif
-/* sin and cos are the library's own by default (trig.h: a bounded frame,
- * no large-argument table); a port may still choose libm or CMSIS-DSP. */
 #ifndef SE23_SIN
-#define SE23_SIN se23_trig_sin
+#define SE23_SIN SE23_LIBM(sin)
 #endif
 #ifndef SE23_COS
-#define SE23_COS se23_trig_cos
+#define SE23_COS SE23_LIBM(cos)
 #endif
 #ifndef SE23_ATAN2
 #define SE23_ATAN2 SE23_LIBM(atan2)
