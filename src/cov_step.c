@@ -174,19 +174,17 @@ int se23_cov_step_fits(const se23_pose_t *U, se23_real_t dt, se23_real_t b,
 se23_status_t se23_step_noise(const se23_imu_noise_t *nz, se23_real_t dt,
                               se23_step_noise_t *q)
 {
-    const se23_real_t d[4] = {nz->gyro_noise, nz->accel_noise, nz->gyro_walk,
-                              nz->accel_walk};
-    if (!se23_all_finite(d, 4)) {
+    const se23_real_t d0 = nz->gyro_noise, d1 = nz->accel_noise;
+    const se23_real_t d2 = nz->gyro_walk, d3 = nz->accel_walk;
+    const se23_real_t qg = d0 * d0 / dt, qa = d1 * d1 / dt;
+    const se23_real_t wg = d2 * d2 * dt, wa = d3 * d3 * dt;
+    /* A NaN or infinite density (dt > 0 is checked) makes its q so, as a
+     * huge density or a denormal dt does; x * 0 is NaN for NaN or Inf. */
+    if (!se23_is_finite(qg * SE23_R(0) + qa * SE23_R(0) + wg * SE23_R(0) + wa * SE23_R(0))) {
         return SE23_ERR_NONFINITE;
     }
-    if (d[0] < SE23_R(0) || d[1] < SE23_R(0) || d[2] < SE23_R(0) || d[3] < SE23_R(0)) {
+    if (d0 < SE23_R(0) || d1 < SE23_R(0) || d2 < SE23_R(0) || d3 < SE23_R(0)) {
         return SE23_ERR_DOMAIN;
-    }
-    const se23_real_t qg = d[0] * d[0] / dt, qa = d[1] * d[1] / dt;
-    const se23_real_t wg = d[2] * d[2] * dt, wa = d[3] * d[3] * dt;
-    if (!se23_is_finite(qg) || !se23_is_finite(qa) || !se23_is_finite(wg) ||
-        !se23_is_finite(wa)) {
-        return SE23_ERR_NONFINITE; /* a huge density, or a denormal dt */
     }
     q->qg = qg;
     q->qa = qa;

@@ -286,7 +286,7 @@ se23_status_t se23_gauss_predict(const se23_earth_model_t *model,
     }
     se23_input_blocks_t Bt;
     se23_input_blocks(kind, &parts, &U.R, &c.f_b, c.dt, &Bt);
-    if (!se23_input_blocks_finite(&Bt, se23_sample_tame(&c)) ||
+    if (!se23_input_blocks_finite(&Bt, parts.tame) ||
         !se23_cov_step_fits(&U, c.dt, se23_input_blocks_bound(&c.f_b, c.dt), &q, g->n,
                             g->P.m, S)) {
         return SE23_ERR_NONFINITE; /* B_k or P+ would overflow */

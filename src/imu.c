@@ -15,8 +15,11 @@
 
 se23_status_t se23_imu_sample_check(const se23_imu_sample_t *s, se23_real_t dt_max)
 {
-    if (!se23_all_finite(s->w_ib_b.v, 3) || !se23_all_finite(s->f_b.v, 3) ||
-        !se23_is_finite(s->dt)) {
+    /* x * 0 is 0 for finite x and NaN for NaN or Inf: one test for all. */
+    const se23_real_t z = SE23_R(0);
+    const se23_real_t bad = s->w_ib_b.v[0] * z + s->w_ib_b.v[1] * z + s->w_ib_b.v[2] * z +
+                            s->f_b.v[0] * z + s->f_b.v[1] * z + s->f_b.v[2] * z + s->dt * z;
+    if (!se23_is_finite(bad)) {
         return SE23_ERR_NONFINITE;
     }
     if (!(s->dt > SE23_R(0) && s->dt <= dt_max)) {
@@ -142,15 +145,17 @@ se23_status_t se23_imu_increment_paper(const se23_imu_sample_t *s, se23_pose_t *
     return first_order_increment(s, SE23_R(0), ups);
 }
 
-void se23_imu_transition(const se23_pose_t *gamma, const se23_pose_t *T,
-                         const se23_pose_t *ups, se23_real_t t,
-                         se23_pose_t *out)
+/* out = gamma Phi_t(T) ups, R re-orthonormalised; out may not alias the
+ * inputs (no copies: a pose is a memcpy call on Cortex-M7). */
+static void transition_into(const se23_pose_t *gamma, const se23_pose_t *T,
+                            const se23_pose_t *ups, se23_real_t t, se23_pose_t *out)
 {
-    se23_pose_t P = *T; /* Phi_t(T) */
-    se23_v3_axpy(&P.p, t, &P.v, &P.p);
-    se23_compose(&P, ups, &P);
     if (gamma != NULL) {
-        se23_compose(gamma, &P, &P);
+        se23_pose_t P;
+        se23_pose_mul_phi(T, ups, t, &P);
+        se23_pose_mul_phi(gamma, &P, SE23_R(0), out);
+    } else {
+        se23_pose_mul_phi(T, ups, t, out);
     }
     /* Each product leaves R about one epsilon off SO(3), and with repeated
      * samples the error adds up linearly: in float a constant sample exceeds
@@ -158,7 +163,15 @@ void se23_imu_transition(const se23_pose_t *gamma, const se23_pose_t *T,
      * the drift passes 4 eps keeps it there (one step takes a drift of a few
      * eps to rounding). A matrix drifted past 0.1, no rotation in the first
      * place, is passed through unchanged by this unchecked function. */
-    (void)se23_m3_orthonormalize_step(&P.R, SE23_NORMALIZE_DONE, SE23_R(0.1));
+    (void)se23_m3_orthonormalize_step(&out->R, SE23_NORMALIZE_DONE, SE23_R(0.1));
+}
+
+void se23_imu_transition(const se23_pose_t *gamma, const se23_pose_t *T,
+                         const se23_pose_t *ups, se23_real_t t,
+                         se23_pose_t *out)
+{
+    se23_pose_t P;
+    transition_into(gamma, T, ups, t, &P);
     *out = P;
 }
 
@@ -167,12 +180,17 @@ se23_status_t se23_imu_step(const se23_earth_model_t *model,
                             se23_pose_t *T_next)
 {
     SE23_CHECK_NOT_NULL(T);
+    SE23_CHECK_NOT_NULL(T_next);
     se23_status_t st = se23_pose_check(T);
     if (st != SE23_OK) {
         return st;
     }
-    se23_pose_t ups;
-    return se23_imu_step_ups(model, T, s, T_next, &ups, NULL);
+    se23_pose_t ups, next;
+    st = se23_imu_step_ups(model, T, s, &next, &ups, NULL);
+    if (st == SE23_OK) {
+        *T_next = next;
+    }
+    return st;
 }
 
 se23_status_t se23_imu_step_ups(const se23_earth_model_t *model,
@@ -198,17 +216,18 @@ se23_status_t se23_imu_step_ups(const se23_earth_model_t *model,
         }
         gamma = &gamma_dt;
     }
-    se23_pose_t u, next;
-    se23_imu_increment_parts(s, &u, parts);
-    se23_imu_transition(gamma, T, &u, s->dt, &next);
+    se23_imu_increment_parts(s, ups, parts);
+    transition_into(gamma, T, ups, s->dt, T_next);
     /* Finite inputs can still overflow (|f| dt near the largest real, or a
      * state near it): refuse instead of returning Inf with SE23_OK. The
      * increment of a tame sample cannot. */
-    if ((!se23_sample_tame(s) && !se23_pose_finite(&u)) || !se23_pose_finite(&next)) {
+    const int tame = se23_sample_tame(s);
+    if (parts != NULL) {
+        parts->tame = tame;
+    }
+    if ((!tame && !se23_pose_finite(ups)) || !se23_pose_finite(T_next)) {
         return SE23_ERR_NONFINITE;
     }
-    *T_next = next;
-    *ups = u;
     return SE23_OK;
 }
 

@@ -18,6 +18,8 @@ typedef struct {
     se23_so3_coeffs_t c;  /**< c1..c4 at t */
     se23_mat3_t J;        /**< J_l(th) */
     se23_mat3_t H;        /**< H(th) */
+    int tame;             /**< se23_sample_tame of the sample (set by
+                               se23_imu_step_ups only) */
 } se23_increment_parts_t;
 
 /** SE23_ERR_NONFINITE unless the sample is finite, SE23_ERR_DT unless
@@ -57,8 +59,10 @@ void se23_imu_increment_parts(const se23_imu_sample_t *s, se23_pose_t *ups,
  * produced, or one the caller checked), plus ups = Upsilon(s) and, if parts
  * is not NULL, the increment's parts. The sample is checked as in
  * se23_imu_step, and SE23_ERR_NONFINITE is returned if the increment or
- * T_next would overflow; T_next and ups are written only on SE23_OK (parts
- * is then scratch).
+ * T_next would overflow. For the hot path's sake this internal step writes
+ * straight into its outputs: on an error T_next, ups and parts are scratch
+ * (or untouched), so callers hand in locals. T_next and ups may not alias
+ * T or each other.
  */
 se23_status_t se23_imu_step_ups(const se23_earth_model_t *model,
                                 const se23_pose_t *T, const se23_imu_sample_t *s,

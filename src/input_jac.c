@@ -97,16 +97,19 @@ typedef struct {
 static void deriv_coeffs(se23_real_t t, deriv_coeffs_t *d)
 {
     const se23_real_t t2 = t * t;
-    if (t < DERIV_TAYLOR_MAX) {
+    if (t < SE23_SERIES_SMALL_THETA) {
         /* Small angles: the first omitted term is below 3e-17 (double) or
-         * 3e-9 (float) relative, as for the series of so3_series.h. */
-        int n = DERIV_TERMS;
-        if (t < SE23_SERIES_SMALL_THETA) {
-            n = SE23_SERIES_SMALL_TERMS;
-        }
-        d->d2 = horner(d2_taylor, n, t2);
-        d->d3 = horner(d3_taylor, n, t2);
-        d->d4 = horner(d4_taylor, n, t2);
+         * 3e-9 (float) relative, as for the series of so3_series.h; a
+         * constant term count, so the sums are written out (no loop). */
+        d->d2 = horner(d2_taylor, SE23_SERIES_SMALL_TERMS, t2);
+        d->d3 = horner(d3_taylor, SE23_SERIES_SMALL_TERMS, t2);
+        d->d4 = horner(d4_taylor, SE23_SERIES_SMALL_TERMS, t2);
+        return;
+    }
+    if (t < DERIV_TAYLOR_MAX) {
+        d->d2 = horner(d2_taylor, DERIV_TERMS, t2);
+        d->d3 = horner(d3_taylor, DERIV_TERMS, t2);
+        d->d4 = horner(d4_taylor, DERIV_TERMS, t2);
         return;
     }
     const se23_real_t s = se23_sin(t), c = se23_cos(t);
@@ -124,16 +127,20 @@ static void series_deriv(se23_real_t a1, se23_real_t a2, se23_real_t b1,
                          se23_real_t b2, const se23_vec3_t *th,
                          const se23_vec3_t *f, se23_real_t s, se23_mat3_t *D)
 {
-    se23_vec3_t wf, wwf;
-    se23_v3_cross(th, f, &wf);
-    se23_v3_cross(th, &wf, &wwf);
     const se23_real_t t0 = th->v[0], t1 = th->v[1], t2 = th->v[2];
-    const se23_real_t sa2 = s * a2, c = s * a1, d = sa2 * se23_v3_dot(th, f);
-    const se23_real_t af0 = sa2 * f->v[0], af1 = sa2 * f->v[1], af2 = sa2 * f->v[2];
-    const se23_real_t w0 = s * (b1 * wf.v[0] + b2 * wwf.v[0]) - SE23_R(2) * af0;
-    const se23_real_t w1 = s * (b1 * wf.v[1] + b2 * wwf.v[1]) - SE23_R(2) * af1;
-    const se23_real_t w2 = s * (b1 * wf.v[2] + b2 * wwf.v[2]) - SE23_R(2) * af2;
-    const se23_real_t cf0 = c * f->v[0], cf1 = c * f->v[1], cf2 = c * f->v[2];
+    const se23_real_t f0 = f->v[0], f1 = f->v[1], f2 = f->v[2];
+    const se23_real_t x0 = t1 * f2 - t2 * f1; /* th x f */
+    const se23_real_t x1 = t2 * f0 - t0 * f2;
+    const se23_real_t x2 = t0 * f1 - t1 * f0;
+    const se23_real_t y0 = t1 * x2 - t2 * x1; /* th x (th x f) */
+    const se23_real_t y1 = t2 * x0 - t0 * x2;
+    const se23_real_t y2 = t0 * x1 - t1 * x0;
+    const se23_real_t sa2 = s * a2, c = s * a1, d = sa2 * (t0 * f0 + t1 * f1 + t2 * f2);
+    const se23_real_t af0 = sa2 * f0, af1 = sa2 * f1, af2 = sa2 * f2;
+    const se23_real_t w0 = s * (b1 * x0 + b2 * y0) - SE23_R(2) * af0;
+    const se23_real_t w1 = s * (b1 * x1 + b2 * y1) - SE23_R(2) * af1;
+    const se23_real_t w2 = s * (b1 * x2 + b2 * y2) - SE23_R(2) * af2;
+    const se23_real_t cf0 = c * f0, cf1 = c * f1, cf2 = c * f2;
     D->m[0][0] = t0 * af0 + w0 * t0 + d;
     D->m[0][1] = t0 * af1 + w0 * t1 + cf2;
     D->m[0][2] = t0 * af2 + w0 * t2 - cf1;

@@ -267,9 +267,21 @@ void se23_m3_acc_mul_skew(se23_mat3_t *C, const se23_mat3_t *A, const se23_vec3_
 se23_real_t se23_m3_orthonormalize_step(se23_mat3_t *X, se23_real_t done,
                                         se23_real_t max_drift)
 {
+    /* X^T X is symmetric: its upper triangle (18 multiply-adds, the
+     * columns' dot products) carries the drift. */
+    const se23_real_t x00 = X->m[0][0], x01 = X->m[0][1], x02 = X->m[0][2];
+    const se23_real_t x10 = X->m[1][0], x11 = X->m[1][1], x12 = X->m[1][2];
+    const se23_real_t x20 = X->m[2][0], x21 = X->m[2][1], x22 = X->m[2][2];
     se23_mat3_t XtX;
-    se23_m3_mul_tn(X, X, &XtX);
-    /* X^T X is symmetric: its upper triangle carries the drift. */
+    XtX.m[0][0] = x00 * x00 + x10 * x10 + x20 * x20;
+    XtX.m[1][1] = x01 * x01 + x11 * x11 + x21 * x21;
+    XtX.m[2][2] = x02 * x02 + x12 * x12 + x22 * x22;
+    XtX.m[0][1] = x00 * x01 + x10 * x11 + x20 * x21;
+    XtX.m[0][2] = x00 * x02 + x10 * x12 + x20 * x22;
+    XtX.m[1][2] = x01 * x02 + x11 * x12 + x21 * x22;
+    XtX.m[1][0] = XtX.m[0][1];
+    XtX.m[2][0] = XtX.m[0][2];
+    XtX.m[2][1] = XtX.m[1][2];
     const se23_real_t e[6] = {
         se23_fabs(XtX.m[0][0] - SE23_R(1)), se23_fabs(XtX.m[1][1] - SE23_R(1)),
         se23_fabs(XtX.m[2][2] - SE23_R(1)), se23_fabs(XtX.m[0][1]),

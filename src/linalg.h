@@ -16,6 +16,12 @@ int se23_all_finite(const se23_real_t *x, int n);
  *  function whose finite inputs may still overflow (types.h). */
 int se23_pose_finite(const se23_pose_t *T);
 
+/** out = Phi_t(A) B: the product A B with t A.v added to its position
+ *  (Phi_t of paper eq. discrete2 applied to A first; t = 0 is se23_compose). out
+ *  may NOT alias A or B (the exception to this header's rule); se23.c. */
+void se23_pose_mul_phi(const se23_pose_t *A, const se23_pose_t *B, se23_real_t t,
+                       se23_pose_t *out);
+
 /** a = (x[0], x[1], x[2]): a 3-block of a flat array as a vector.
  *  Inline: it sits in the per-column loops of the covariance products. */
 static inline void se23_v3_load(const se23_real_t *x, se23_vec3_t *a)

@@ -16,14 +16,38 @@ void se23_identity(se23_pose_t *T)
     }
 }
 
+/* out = Phi_t(A) B = (Ra Rb, Ra vb + va, Ra pb + pa + t va), straight
+ * line: every operand is loaded once before the first store, so out may
+ * not alias A or B. [27 + 9 + 9 + 3 multiply-adds] */
+void se23_pose_mul_phi(const se23_pose_t *A, const se23_pose_t *B, se23_real_t t,
+                       se23_pose_t *out)
+{
+    const se23_real_t a00 = A->R.m[0][0], a01 = A->R.m[0][1], a02 = A->R.m[0][2];
+    const se23_real_t a10 = A->R.m[1][0], a11 = A->R.m[1][1], a12 = A->R.m[1][2];
+    const se23_real_t a20 = A->R.m[2][0], a21 = A->R.m[2][1], a22 = A->R.m[2][2];
+    for (int j = 0; j < 3; ++j) {
+        const se23_real_t b0 = B->R.m[0][j], b1 = B->R.m[1][j], b2 = B->R.m[2][j];
+        out->R.m[0][j] = a00 * b0 + a01 * b1 + a02 * b2;
+        out->R.m[1][j] = a10 * b0 + a11 * b1 + a12 * b2;
+        out->R.m[2][j] = a20 * b0 + a21 * b1 + a22 * b2;
+    }
+    const se23_real_t v0 = B->v.v[0], v1 = B->v.v[1], v2 = B->v.v[2];
+    const se23_real_t p0 = B->p.v[0], p1 = B->p.v[1], p2 = B->p.v[2];
+    const se23_real_t u0 = A->v.v[0], u1 = A->v.v[1], u2 = A->v.v[2];
+    /* Summed as (Ra vb) + va and (Ra pb) + (pa + t va): one rounding of
+     * the large translation, as in the plain product. */
+    out->v.v[0] = (a00 * v0 + a01 * v1 + a02 * v2) + u0;
+    out->v.v[1] = (a10 * v0 + a11 * v1 + a12 * v2) + u1;
+    out->v.v[2] = (a20 * v0 + a21 * v1 + a22 * v2) + u2;
+    out->p.v[0] = (a00 * p0 + a01 * p1 + a02 * p2) + (A->p.v[0] + t * u0);
+    out->p.v[1] = (a10 * p0 + a11 * p1 + a12 * p2) + (A->p.v[1] + t * u1);
+    out->p.v[2] = (a20 * p0 + a21 * p1 + a22 * p2) + (A->p.v[2] + t * u2);
+}
+
 void se23_compose(const se23_pose_t *A, const se23_pose_t *B, se23_pose_t *AB)
 {
     se23_pose_t out;
-    se23_m3_mul(&A->R, &B->R, &out.R);
-    se23_m3_mul_v3(&A->R, &B->v, &out.v);
-    se23_m3_mul_v3(&A->R, &B->p, &out.p);
-    se23_v3_axpy(&out.v, SE23_R(1), &A->v, &out.v);
-    se23_v3_axpy(&out.p, SE23_R(1), &A->p, &out.p);
+    se23_pose_mul_phi(A, B, SE23_R(0), &out);
     *AB = out;
 }
 

@@ -86,16 +86,21 @@ static se23_real_t horner(const se23_real_t *coef, int stride, se23_real_t x)
 void se23_so3_coeffs(se23_real_t theta, se23_so3_coeffs_t *c)
 {
     const se23_real_t t = theta * theta;
+    /* c_m = sum_k inv_fact[2k + m] (-t)^k. The IMU's branch has a constant
+     * term count, so the compiler writes its Horner sums out (12 or 20
+     * multiply-adds, no loop). */
+    if (theta < SE23_SERIES_SMALL_THETA) {
+        c->c1 = horner_n(&inv_fact[1], 2, SE23_SERIES_SMALL_TERMS, -t);
+        c->c2 = horner_n(&inv_fact[2], 2, SE23_SERIES_SMALL_TERMS, -t);
+        c->c3 = horner_n(&inv_fact[3], 2, SE23_SERIES_SMALL_TERMS, -t);
+        c->c4 = horner_n(&inv_fact[4], 2, SE23_SERIES_SMALL_TERMS, -t);
+        return;
+    }
     if (theta < TAYLOR_MAX) {
-        /* c_m = sum_k inv_fact[2k + m] (-t)^k */
-        int n = SERIES_TERMS;
-        if (theta < SE23_SERIES_SMALL_THETA) {
-            n = SE23_SERIES_SMALL_TERMS;
-        }
-        c->c1 = horner_n(&inv_fact[1], 2, n, -t);
-        c->c2 = horner_n(&inv_fact[2], 2, n, -t);
-        c->c3 = horner_n(&inv_fact[3], 2, n, -t);
-        c->c4 = horner_n(&inv_fact[4], 2, n, -t);
+        c->c1 = horner(&inv_fact[1], 2, -t);
+        c->c2 = horner(&inv_fact[2], 2, -t);
+        c->c3 = horner(&inv_fact[3], 2, -t);
+        c->c4 = horner(&inv_fact[4], 2, -t);
         return;
     }
     const se23_real_t s = se23_sin(theta);
