@@ -94,22 +94,26 @@ typedef struct {
     se23_real_t d2, d3, d4;
 } deriv_coeffs_t;
 
+/* d_m as Taylor sums of `terms` terms in t^2. Inline, so a constant term
+ * count lets the compiler write the sums out. */
+static inline void taylor_derivs(se23_real_t t2, int terms, deriv_coeffs_t *d)
+{
+    d->d2 = horner(d2_taylor, terms, t2);
+    d->d3 = horner(d3_taylor, terms, t2);
+    d->d4 = horner(d4_taylor, terms, t2);
+}
+
 static void deriv_coeffs(se23_real_t t, deriv_coeffs_t *d)
 {
     const se23_real_t t2 = t * t;
     if (t < SE23_SERIES_SMALL_THETA) {
         /* Small angles: the first omitted term is below 3e-17 (double) or
-         * 3e-9 (float) relative, as for the series of so3_series.h; a
-         * constant term count, so the sums are written out (no loop). */
-        d->d2 = horner(d2_taylor, SE23_SERIES_SMALL_TERMS, t2);
-        d->d3 = horner(d3_taylor, SE23_SERIES_SMALL_TERMS, t2);
-        d->d4 = horner(d4_taylor, SE23_SERIES_SMALL_TERMS, t2);
+         * 3e-9 (float) relative, as for the series of so3_series.h; no loop. */
+        taylor_derivs(t2, SE23_SERIES_SMALL_TERMS, d);
         return;
     }
     if (t < DERIV_TAYLOR_MAX) {
-        d->d2 = horner(d2_taylor, DERIV_TERMS, t2);
-        d->d3 = horner(d3_taylor, DERIV_TERMS, t2);
-        d->d4 = horner(d4_taylor, DERIV_TERMS, t2);
+        taylor_derivs(t2, DERIV_TERMS, d);
         return;
     }
     const se23_real_t s = se23_sin(t), c = se23_cos(t);

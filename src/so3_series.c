@@ -83,24 +83,27 @@ static se23_real_t horner(const se23_real_t *coef, int stride, se23_real_t x)
     return horner_n(coef, stride, SERIES_TERMS, x);
 }
 
+/* c_m = sum_{k < terms} inv_fact[2k + m] (-t)^k, m = 1..4. Inline, so a
+ * constant term count lets the compiler write the Horner sums out. */
+static inline void taylor_coeffs(se23_real_t t, int terms,
+                                 se23_so3_coeffs_t *c)
+{
+    c->c1 = horner_n(&inv_fact[1], 2, terms, -t);
+    c->c2 = horner_n(&inv_fact[2], 2, terms, -t);
+    c->c3 = horner_n(&inv_fact[3], 2, terms, -t);
+    c->c4 = horner_n(&inv_fact[4], 2, terms, -t);
+}
+
 void se23_so3_coeffs(se23_real_t theta, se23_so3_coeffs_t *c)
 {
     const se23_real_t t = theta * theta;
-    /* c_m = sum_k inv_fact[2k + m] (-t)^k. The IMU's branch has a constant
-     * term count, so the compiler writes its Horner sums out (12 or 20
-     * multiply-adds, no loop). */
+    /* The IMU's branch: 12 or 20 multiply-adds, no loop. */
     if (theta < SE23_SERIES_SMALL_THETA) {
-        c->c1 = horner_n(&inv_fact[1], 2, SE23_SERIES_SMALL_TERMS, -t);
-        c->c2 = horner_n(&inv_fact[2], 2, SE23_SERIES_SMALL_TERMS, -t);
-        c->c3 = horner_n(&inv_fact[3], 2, SE23_SERIES_SMALL_TERMS, -t);
-        c->c4 = horner_n(&inv_fact[4], 2, SE23_SERIES_SMALL_TERMS, -t);
+        taylor_coeffs(t, SE23_SERIES_SMALL_TERMS, c);
         return;
     }
     if (theta < TAYLOR_MAX) {
-        c->c1 = horner(&inv_fact[1], 2, -t);
-        c->c2 = horner(&inv_fact[2], 2, -t);
-        c->c3 = horner(&inv_fact[3], 2, -t);
-        c->c4 = horner(&inv_fact[4], 2, -t);
+        taylor_coeffs(t, SERIES_TERMS, c);
         return;
     }
     const se23_real_t s = se23_sin(theta);
