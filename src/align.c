@@ -8,6 +8,7 @@
 #include "linalg.h"
 #include "se23/so3.h"
 #include "se23_math.h"
+#include "trig.h"
 
 /* The (cos, sin) pairs of roll, pitch and yaw. */
 typedef struct {
@@ -114,8 +115,7 @@ se23_status_t se23_align_level(se23_frame_t frame, const se23_vec3_t *f_mean,
     if (st != SE23_OK) {
         return st;
     }
-    a.cy = se23_cos(yaw);
-    a.sy = se23_sin(yaw);
+    se23_sincos(yaw, &a.sy, &a.cy);
     euler_to_rot(&a, R);
     return SE23_OK;
 }
@@ -193,7 +193,9 @@ se23_status_t se23_align_gyrocompass(se23_frame_t frame, se23_real_t lat,
         return st;
     }
     /* Horizontal Earth rate W |cos lat| and the heading std. */
-    const se23_real_t wh = SE23_R(SE23_WGS84_OMEGA_E) * se23_fabs(se23_cos(lat));
+    se23_real_t sin_lat, cos_lat;
+    se23_sincos(lat, &sin_lat, &cos_lat);
+    const se23_real_t wh = SE23_R(SE23_WGS84_OMEGA_E) * se23_fabs(cos_lat);
     const se23_real_t denom = se23_sqrt((se23_real_t)n) * wh;
     if (!(sigma_w <= SE23_R(SE23_ALIGN_YAW_STD_MAX) * denom)) {
         return SE23_ERR_DOMAIN;

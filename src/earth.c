@@ -5,6 +5,7 @@
 #include "linalg.h"
 #include "se23_math.h"
 #include "so3_series.h"
+#include "trig.h"
 
 /* |lat| <= pi/2 + slack, lat finite. */
 static se23_status_t check_lat(se23_real_t lat)
@@ -31,7 +32,8 @@ se23_status_t se23_earth_gravity(se23_real_t lat, se23_real_t h, se23_real_t *g)
     if (!(h >= SE23_R(SE23_EARTH_H_MIN) && h <= SE23_R(SE23_EARTH_H_MAX))) {
         return SE23_ERR_DOMAIN;
     }
-    const se23_real_t s = se23_sin(lat);
+    se23_real_t s, c;
+    se23_sincos(lat, &s, &c);
     const se23_real_t s2 = s * s;
     const se23_real_t g0 = SE23_R(SE23_WGS84_GAMMA_E) *
                            (SE23_R(1) + SE23_R(SE23_WGS84_K) * s2) /
@@ -75,8 +77,10 @@ se23_status_t se23_earth_rate(se23_frame_t frame, se23_real_t lat,
         return st;
     }
     const se23_real_t we = SE23_R(SE23_WGS84_OMEGA_E);
-    const se23_real_t north = we * se23_cos(lat);
-    const se23_real_t up = we * se23_sin(lat);
+    se23_real_t sin_lat, cos_lat;
+    se23_sincos(lat, &sin_lat, &cos_lat);
+    const se23_real_t north = we * cos_lat;
+    const se23_real_t up = we * sin_lat;
     if (frame == SE23_FRAME_NED) {
         w_ie_n->v[0] = north;
         w_ie_n->v[1] = SE23_R(0);

@@ -34,6 +34,7 @@
 #include "linalg.h"
 #include "se23_math.h"
 #include "so3_series.h"
+#include "trig.h"
 
 #define DERIV_TERMS 10
 
@@ -116,7 +117,8 @@ static void deriv_coeffs(se23_real_t t, deriv_coeffs_t *d)
         taylor_derivs(t2, DERIV_TERMS, d);
         return;
     }
-    const se23_real_t s = se23_sin(t), c = se23_cos(t);
+    se23_real_t s, c;
+    se23_sincos(t, &s, &c);
     const se23_real_t t4 = t2 * t2;
     d->d2 = (t * s + SE23_R(2) * c - SE23_R(2)) / t4;
     d->d3 = (SE23_R(3) * s - SE23_R(2) * t - t * c) / (t4 * t);

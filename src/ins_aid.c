@@ -8,6 +8,7 @@
 
 #include "linalg.h"
 #include "se23_math.h"
+#include "trig.h"
 
 /* ins->work = the user's state of ins->g. */
 static se23_status_t user_state(se23_ins_t *ins)
@@ -173,8 +174,8 @@ static void course_heading(se23_ins_t *ins, const se23_ins_gnss_t *fix, se23_rea
     const se23_real_t s2 = (ins->align.course_sigma * ins->align.course_sigma) + (sh * sh);
     const se23_real_t d = se23_atan2(fix->v_n.v[1], fix->v_n.v[0]) -
                           se23_atan2(g->T.R.m[1][0], g->T.R.m[0][0]);
-    const se23_real_t c = se23_cos(d);
-    const se23_real_t sn = se23_sin(d);
+    se23_real_t sn, c;
+    se23_sincos(d, &sn, &c);
     se23_mat3_t Rz, R;
     se23_vec3_t r, w, wl, Rwl;
     int i, j, k;

@@ -22,11 +22,8 @@
 #ifndef SE23_SQRT
 #define SE23_SQRT SE23_LIBM(sqrt)
 #endif
-#ifndef SE23_SIN
-#define SE23_SIN SE23_LIBM(sin)
-#endif
-#ifndef SE23_COS
-#define SE23_COS SE23_LIBM(cos)
+#ifndef SE23_FMOD
+#define SE23_FMOD SE23_LIBM(fmod)
 #endif
 #ifndef SE23_ATAN2
 #define SE23_ATAN2 SE23_LIBM(atan2)
@@ -36,8 +33,7 @@
 #endif
 
 static inline se23_real_t se23_sqrt(se23_real_t x) { return SE23_SQRT(x); }
-static inline se23_real_t se23_sin(se23_real_t x) { return SE23_SIN(x); }
-static inline se23_real_t se23_cos(se23_real_t x) { return SE23_COS(x); }
+static inline se23_real_t se23_fmod(se23_real_t x, se23_real_t y) { return SE23_FMOD(x, y); }
 static inline se23_real_t se23_atan2(se23_real_t y, se23_real_t x) { return SE23_ATAN2(y, x); }
 static inline se23_real_t se23_fabs(se23_real_t x) { return SE23_FABS(x); }
 

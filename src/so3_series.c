@@ -10,6 +10,7 @@
 #include "so3_series.h"
 
 #include "se23_math.h"
+#include "trig.h"
 
 #define SERIES_TERMS 9
 
@@ -83,6 +84,31 @@ static se23_real_t horner(const se23_real_t *coef, int stride, se23_real_t x)
     return horner_n(coef, stride, SERIES_TERMS, x);
 }
 
+/* sin theta and 1 - cos theta. Within the exact range of se23_sincos one
+ * reduction gives both, and 1 - cos theta is taken directly where cos
+ * theta <= 1/2 (no cancellation: the error is that of cos, below 1 eps of
+ * the result); nearer theta = 0 mod 2 pi it is 2 sin^2(theta/2). Beyond
+ * the range each reduction is off by up to |theta| eps, differently, so
+ * both come from theta/2 alone (sin theta = 2 sin cos of it): c1 and c2
+ * are then of one angle, and exp is a rotation. */
+static void sin_one_minus_cos(se23_real_t theta, se23_real_t *s, se23_real_t *omc)
+{
+    se23_real_t hs, hc;
+    if (theta <= SE23_TRIG_EXACT_MAX) {
+        se23_real_t c;
+        se23_sincos(theta, s, &c);
+        if (c <= SE23_R(0.5)) {
+            *omc = SE23_R(1) - c;
+            return;
+        }
+        se23_sincos(SE23_R(0.5) * theta, &hs, &hc);
+    } else {
+        se23_sincos(SE23_R(0.5) * theta, &hs, &hc);
+        *s = SE23_R(2) * hs * hc;
+    }
+    *omc = SE23_R(2) * hs * hs;
+}
+
 /* c_m = sum_{k < terms} inv_fact[2k + m] (-t)^k, m = 1..4. Inline, so a
  * constant term count lets the compiler write the Horner sums out. */
 static inline void taylor_coeffs(se23_real_t t, int terms,
@@ -106,9 +132,8 @@ void se23_so3_coeffs(se23_real_t theta, se23_so3_coeffs_t *c)
         taylor_coeffs(t, SERIES_TERMS, c);
         return;
     }
-    const se23_real_t s = se23_sin(theta);
-    const se23_real_t half_s = se23_sin(SE23_R(0.5) * theta);
-    const se23_real_t one_minus_cos = SE23_R(2) * half_s * half_s;
+    se23_real_t s, one_minus_cos;
+    sin_one_minus_cos(theta, &s, &one_minus_cos);
     c->c1 = s / theta;
     c->c2 = one_minus_cos / t;
     c->c3 = (theta - s) / (t * theta);
@@ -123,9 +148,8 @@ void se23_so3_k_coeffs(se23_real_t theta, se23_real_t *k1, se23_real_t *k2)
         *k2 = horner(k2_taylor, 1, -t);
         return;
     }
-    const se23_real_t s = se23_sin(theta);
-    const se23_real_t half_s = se23_sin(SE23_R(0.5) * theta);
-    const se23_real_t one_minus_cos = SE23_R(2) * half_s * half_s;
+    se23_real_t s, one_minus_cos;
+    sin_one_minus_cos(theta, &s, &one_minus_cos);
     const se23_real_t cos_theta = SE23_R(1) - one_minus_cos;
     *k1 = (s - theta * cos_theta) / (t * theta);
     *k2 = (SE23_R(0.5) * t + one_minus_cos - theta * s) / (t * t);
@@ -141,6 +165,7 @@ se23_real_t se23_so3_jl_inv_coeff(se23_real_t theta)
     if (x < TAYLOR_MAX) {
         return horner(k1_taylor, 1, -t) / (SE23_R(4) * horner(&inv_fact[1], 2, -t));
     }
-    const se23_real_t s = se23_sin(x);
-    return (s - x * se23_cos(x)) / (SE23_R(4) * t * s);
+    se23_real_t s, c;
+    se23_sincos(x, &s, &c);
+    return (s - x * c) / (SE23_R(4) * t * s);
 }

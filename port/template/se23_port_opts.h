@@ -13,9 +13,8 @@
 
 /* #define SE23_CFG_DOUBLE 0 */
 /* #define SE23_SQRT my_sqrtf */
-/* #define SE23_SIN my_sinf */
-/* #define SE23_COS my_cosf */
 /* #define SE23_ATAN2 my_atan2f */
+/* #define SE23_FMOD my_fmodf */
 /* #define SE23_FABS my_fabsf */
 
 #endif /* SE23_PORT_OPTS_H */
