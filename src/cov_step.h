@@ -172,6 +172,20 @@ void se23_input_blocks(se23_input_jac_kind_t kind,
                        const se23_vec3_t *f, se23_real_t dt,
                        se23_input_blocks_t *Bt);
 
+/**
+ * The mean and input half of one filter prediction (se23_gauss_predict):
+ * se23_imu_step_ups from the trusted pose T and the corrected sample c,
+ * the step noise q of c.dt, and Bt of the given kind, checked finite
+ * (SE23_ERR_NONFINITE otherwise). A call of its own so that the
+ * increment's parts, used only to build Bt, are not on the stack under the
+ * covariance kernels. Its outputs are scratch on error.
+ */
+se23_status_t se23_predict_inputs(const se23_earth_model_t *model, const se23_pose_t *T,
+                                  const se23_imu_sample_t *c, const se23_imu_noise_t *noise,
+                                  se23_input_jac_kind_t kind, se23_pose_t *T_next,
+                                  se23_pose_t *U, se23_step_noise_t *q,
+                                  se23_input_blocks_t *Bt);
+
 /** B = D Bt, the public form of the input matrix (gauss.h). */
 void se23_input_blocks_rotate(const se23_mat3_t *R,
                               const se23_input_blocks_t *Bt, se23_mat9x6_t *B);

@@ -275,21 +275,15 @@ se23_status_t se23_gauss_predict(const se23_earth_model_t *model,
     se23_imu_sample_corrected(s, &g->b_g, &g->b_a, &c);
     /* The step checks the sample; its outputs are locals until the end. */
     se23_pose_t U, T_next;
-    se23_increment_parts_t parts;
     se23_step_noise_t q;
-    st = se23_imu_step_ups(model, &g->T, &c, &T_next, &U, &parts);
-    if (st == SE23_OK) {
-        st = se23_step_noise(noise, c.dt, &q);
-    }
+    se23_input_blocks_t Bt;
+    st = se23_predict_inputs(model, &g->T, &c, noise, kind, &T_next, &U, &q, &Bt);
     if (st != SE23_OK) {
         return st;
     }
-    se23_input_blocks_t Bt;
-    se23_input_blocks(kind, &parts, &U.R, &c.f_b, c.dt, &Bt);
-    if (!se23_input_blocks_finite(&Bt, parts.tame) ||
-        !se23_cov_step_fits(&U, c.dt, se23_input_blocks_bound(&c.f_b, c.dt), &q, g->n,
+    if (!se23_cov_step_fits(&U, c.dt, se23_input_blocks_bound(&c.f_b, c.dt), &q, g->n,
                             g->P.m, S)) {
-        return SE23_ERR_NONFINITE; /* B_k or P+ would overflow */
+        return SE23_ERR_NONFINITE; /* P+ would overflow */
     }
     /* Nothing fails from here on (the covariance step reads only g->P). */
     se23_cov_step(&U, c.dt, &Bt, &q, g->n, g->P.m, out->P.m, S);
