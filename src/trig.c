@@ -80,20 +80,21 @@ static inline se23_real_t poly(const se23_real_t *coef, int terms, se23_real_t z
 
 void se23_sincos(se23_real_t x, se23_real_t *s, se23_real_t *c)
 {
+    se23_real_t xr = x;
     if (!(se23_fabs(x) <= SE23_TRIG_EXACT_MAX)) {
         if (!se23_is_finite(x)) {
             *s = x - x; /* NaN */
             *c = x - x;
             return;
         }
-        x = se23_fmod(x, TWO_PI);
+        xr = se23_fmod(x, TWO_PI);
     }
-    const se23_real_t kr = x * TWO_OVER_PI;
+    const se23_real_t kr = xr * TWO_OVER_PI;
     const long k = (long)(kr + ((kr < SE23_R(0)) ? SE23_R(-0.5) : SE23_R(0.5)));
     const se23_real_t kf = (se23_real_t)k;
     /* r + rt = x - k pi/2: a exact, a - w with its rounding error carried
      * in rt (|a| >= |w|: w is the small middle part), then the tail. */
-    const se23_real_t a = x - kf * PIO2_C1;
+    const se23_real_t a = xr - kf * PIO2_C1;
     const se23_real_t w = kf * PIO2_C2;
     const se23_real_t r1 = a - w;
     const se23_real_t t = ((a - r1) - w) - kf * PIO2_C3;
