@@ -114,10 +114,13 @@ void se23_cov_step(const se23_pose_t *U, se23_real_t dt,
                    const se23_input_blocks_t *Bt, const se23_step_noise_t *q,
                    int n, const se23_real_t *P, se23_real_t *out, int stride);
 
-/** The pose blocks (i, j), i <= j, of S = G X G^T + E before the rotation
- *  (diagonal blocks: upper triangles only). */
+/** The pose blocks (i, j), i <= j, of S = G X G^T + E before the rotation,
+ *  packed: the blocks in the order (0,0), (0,1), (0,2), (1,1), (1,2),
+ *  (2,2), a diagonal block as its upper triangle by rows (6 entries), the
+ *  others by rows (9); 45 entries, the 81 of nine full blocks less what
+ *  symmetry repeats (the scratch is on the stack under every step). */
 typedef struct {
-    se23_mat3_t blk[3][3];
+    se23_real_t e[45];
 } se23_cov_pose_t;
 
 /** The stages of se23_cov_step (file comment of cov_step.c), each a

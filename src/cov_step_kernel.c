@@ -21,7 +21,7 @@ void se23_cov_step9_noise(const se23_input_blocks_t *Bt, const se23_step_noise_t
     const se23_real_t b00_02 = Bt->blk[0][0].m[0][2];
     const se23_real_t t3 = qg * b00_02;
     const se23_real_t t4 = b00_00 * t1 + b00_01 * t2 + b00_02 * t3;
-    S->blk[0][0].m[0][0] = t4;
+    S->e[0] = t4;
     const se23_real_t b00_10 = Bt->blk[0][0].m[1][0];
     const se23_real_t t5 = qg * b00_10;
     const se23_real_t b00_11 = Bt->blk[0][0].m[1][1];
@@ -29,7 +29,7 @@ void se23_cov_step9_noise(const se23_input_blocks_t *Bt, const se23_step_noise_t
     const se23_real_t b00_12 = Bt->blk[0][0].m[1][2];
     const se23_real_t t7 = qg * b00_12;
     const se23_real_t t8 = b00_00 * t5 + b00_01 * t6 + b00_02 * t7;
-    S->blk[0][0].m[0][1] = t8;
+    S->e[1] = t8;
     const se23_real_t b00_20 = Bt->blk[0][0].m[2][0];
     const se23_real_t t9 = qg * b00_20;
     const se23_real_t b00_21 = Bt->blk[0][0].m[2][1];
@@ -37,13 +37,13 @@ void se23_cov_step9_noise(const se23_input_blocks_t *Bt, const se23_step_noise_t
     const se23_real_t b00_22 = Bt->blk[0][0].m[2][2];
     const se23_real_t t11 = qg * b00_22;
     const se23_real_t t12 = b00_00 * t9 + b00_01 * t10 + b00_02 * t11;
-    S->blk[0][0].m[0][2] = t12;
+    S->e[2] = t12;
     const se23_real_t t13 = b00_10 * t5 + b00_11 * t6 + b00_12 * t7;
-    S->blk[0][0].m[1][1] = t13;
+    S->e[3] = t13;
     const se23_real_t t14 = b00_10 * t9 + b00_11 * t10 + b00_12 * t11;
-    S->blk[0][0].m[1][2] = t14;
+    S->e[4] = t14;
     const se23_real_t t15 = b00_20 * t9 + b00_21 * t10 + b00_22 * t11;
-    S->blk[0][0].m[2][2] = t15;
+    S->e[5] = t15;
     const se23_real_t b10_00 = Bt->blk[1][0].m[0][0];
     const se23_real_t t16 = qg * b10_00;
     const se23_real_t b10_01 = Bt->blk[1][0].m[0][1];
@@ -51,7 +51,7 @@ void se23_cov_step9_noise(const se23_input_blocks_t *Bt, const se23_step_noise_t
     const se23_real_t b10_02 = Bt->blk[1][0].m[0][2];
     const se23_real_t t18 = qg * b10_02;
     const se23_real_t t19 = b00_00 * t16 + b00_01 * t17 + b00_02 * t18;
-    S->blk[0][1].m[0][0] = t19;
+    S->e[6] = t19;
     const se23_real_t b10_10 = Bt->blk[1][0].m[1][0];
     const se23_real_t t20 = qg * b10_10;
     const se23_real_t b10_11 = Bt->blk[1][0].m[1][1];
@@ -59,7 +59,7 @@ void se23_cov_step9_noise(const se23_input_blocks_t *Bt, const se23_step_noise_t
     const se23_real_t b10_12 = Bt->blk[1][0].m[1][2];
     const se23_real_t t22 = qg * b10_12;
     const se23_real_t t23 = b00_00 * t20 + b00_01 * t21 + b00_02 * t22;
-    S->blk[0][1].m[0][1] = t23;
+    S->e[7] = t23;
     const se23_real_t b10_20 = Bt->blk[1][0].m[2][0];
     const se23_real_t t24 = qg * b10_20;
     const se23_real_t b10_21 = Bt->blk[1][0].m[2][1];
@@ -67,19 +67,19 @@ void se23_cov_step9_noise(const se23_input_blocks_t *Bt, const se23_step_noise_t
     const se23_real_t b10_22 = Bt->blk[1][0].m[2][2];
     const se23_real_t t26 = qg * b10_22;
     const se23_real_t t27 = b00_00 * t24 + b00_01 * t25 + b00_02 * t26;
-    S->blk[0][1].m[0][2] = t27;
+    S->e[8] = t27;
     const se23_real_t t28 = b00_10 * t16 + b00_11 * t17 + b00_12 * t18;
-    S->blk[0][1].m[1][0] = t28;
+    S->e[9] = t28;
     const se23_real_t t29 = b00_10 * t20 + b00_11 * t21 + b00_12 * t22;
-    S->blk[0][1].m[1][1] = t29;
+    S->e[10] = t29;
     const se23_real_t t30 = b00_10 * t24 + b00_11 * t25 + b00_12 * t26;
-    S->blk[0][1].m[1][2] = t30;
+    S->e[11] = t30;
     const se23_real_t t31 = b00_20 * t16 + b00_21 * t17 + b00_22 * t18;
-    S->blk[0][1].m[2][0] = t31;
+    S->e[12] = t31;
     const se23_real_t t32 = b00_20 * t20 + b00_21 * t21 + b00_22 * t22;
-    S->blk[0][1].m[2][1] = t32;
+    S->e[13] = t32;
     const se23_real_t t33 = b00_20 * t24 + b00_21 * t25 + b00_22 * t26;
-    S->blk[0][1].m[2][2] = t33;
+    S->e[14] = t33;
     const se23_real_t b20_00 = Bt->blk[2][0].m[0][0];
     const se23_real_t t34 = qg * b20_00;
     const se23_real_t b20_01 = Bt->blk[2][0].m[0][1];
@@ -87,7 +87,7 @@ void se23_cov_step9_noise(const se23_input_blocks_t *Bt, const se23_step_noise_t
     const se23_real_t b20_02 = Bt->blk[2][0].m[0][2];
     const se23_real_t t36 = qg * b20_02;
     const se23_real_t t37 = b00_00 * t34 + b00_01 * t35 + b00_02 * t36;
-    S->blk[0][2].m[0][0] = t37;
+    S->e[15] = t37;
     const se23_real_t b20_10 = Bt->blk[2][0].m[1][0];
     const se23_real_t t38 = qg * b20_10;
     const se23_real_t b20_11 = Bt->blk[2][0].m[1][1];
@@ -95,7 +95,7 @@ void se23_cov_step9_noise(const se23_input_blocks_t *Bt, const se23_step_noise_t
     const se23_real_t b20_12 = Bt->blk[2][0].m[1][2];
     const se23_real_t t40 = qg * b20_12;
     const se23_real_t t41 = b00_00 * t38 + b00_01 * t39 + b00_02 * t40;
-    S->blk[0][2].m[0][1] = t41;
+    S->e[16] = t41;
     const se23_real_t b20_20 = Bt->blk[2][0].m[2][0];
     const se23_real_t t42 = qg * b20_20;
     const se23_real_t b20_21 = Bt->blk[2][0].m[2][1];
@@ -103,19 +103,19 @@ void se23_cov_step9_noise(const se23_input_blocks_t *Bt, const se23_step_noise_t
     const se23_real_t b20_22 = Bt->blk[2][0].m[2][2];
     const se23_real_t t44 = qg * b20_22;
     const se23_real_t t45 = b00_00 * t42 + b00_01 * t43 + b00_02 * t44;
-    S->blk[0][2].m[0][2] = t45;
+    S->e[17] = t45;
     const se23_real_t t46 = b00_10 * t34 + b00_11 * t35 + b00_12 * t36;
-    S->blk[0][2].m[1][0] = t46;
+    S->e[18] = t46;
     const se23_real_t t47 = b00_10 * t38 + b00_11 * t39 + b00_12 * t40;
-    S->blk[0][2].m[1][1] = t47;
+    S->e[19] = t47;
     const se23_real_t t48 = b00_10 * t42 + b00_11 * t43 + b00_12 * t44;
-    S->blk[0][2].m[1][2] = t48;
+    S->e[20] = t48;
     const se23_real_t t49 = b00_20 * t34 + b00_21 * t35 + b00_22 * t36;
-    S->blk[0][2].m[2][0] = t49;
+    S->e[21] = t49;
     const se23_real_t t50 = b00_20 * t38 + b00_21 * t39 + b00_22 * t40;
-    S->blk[0][2].m[2][1] = t50;
+    S->e[22] = t50;
     const se23_real_t t51 = b00_20 * t42 + b00_21 * t43 + b00_22 * t44;
-    S->blk[0][2].m[2][2] = t51;
+    S->e[23] = t51;
     const se23_real_t qa = q->qa;
     const se23_real_t b11_00 = Bt->blk[1][1].m[0][0];
     const se23_real_t t52 = qa * b11_00;
@@ -125,7 +125,7 @@ void se23_cov_step9_noise(const se23_input_blocks_t *Bt, const se23_step_noise_t
     const se23_real_t t54 = qa * b11_02;
     const se23_real_t t55 = b10_00 * t16 + b10_01 * t17 + b10_02 * t18 + b11_00 * t52
                             + b11_01 * t53 + b11_02 * t54;
-    S->blk[1][1].m[0][0] = t55;
+    S->e[24] = t55;
     const se23_real_t b11_10 = Bt->blk[1][1].m[1][0];
     const se23_real_t t56 = qa * b11_10;
     const se23_real_t b11_11 = Bt->blk[1][1].m[1][1];
@@ -134,7 +134,7 @@ void se23_cov_step9_noise(const se23_input_blocks_t *Bt, const se23_step_noise_t
     const se23_real_t t58 = qa * b11_12;
     const se23_real_t t59 = b10_00 * t20 + b10_01 * t21 + b10_02 * t22 + b11_00 * t56
                             + b11_01 * t57 + b11_02 * t58;
-    S->blk[1][1].m[0][1] = t59;
+    S->e[25] = t59;
     const se23_real_t b11_20 = Bt->blk[1][1].m[2][0];
     const se23_real_t t60 = qa * b11_20;
     const se23_real_t b11_21 = Bt->blk[1][1].m[2][1];
@@ -143,16 +143,16 @@ void se23_cov_step9_noise(const se23_input_blocks_t *Bt, const se23_step_noise_t
     const se23_real_t t62 = qa * b11_22;
     const se23_real_t t63 = b10_00 * t24 + b10_01 * t25 + b10_02 * t26 + b11_00 * t60
                             + b11_01 * t61 + b11_02 * t62;
-    S->blk[1][1].m[0][2] = t63;
+    S->e[26] = t63;
     const se23_real_t t64 = b10_10 * t20 + b10_11 * t21 + b10_12 * t22 + b11_10 * t56
                             + b11_11 * t57 + b11_12 * t58;
-    S->blk[1][1].m[1][1] = t64;
+    S->e[27] = t64;
     const se23_real_t t65 = b10_10 * t24 + b10_11 * t25 + b10_12 * t26 + b11_10 * t60
                             + b11_11 * t61 + b11_12 * t62;
-    S->blk[1][1].m[1][2] = t65;
+    S->e[28] = t65;
     const se23_real_t t66 = b10_20 * t24 + b10_21 * t25 + b10_22 * t26 + b11_20 * t60
                             + b11_21 * t61 + b11_22 * t62;
-    S->blk[1][1].m[2][2] = t66;
+    S->e[29] = t66;
     const se23_real_t b21_00 = Bt->blk[2][1].m[0][0];
     const se23_real_t t67 = qa * b21_00;
     const se23_real_t b21_01 = Bt->blk[2][1].m[0][1];
@@ -161,7 +161,7 @@ void se23_cov_step9_noise(const se23_input_blocks_t *Bt, const se23_step_noise_t
     const se23_real_t t69 = qa * b21_02;
     const se23_real_t t70 = b10_00 * t34 + b10_01 * t35 + b10_02 * t36 + b11_00 * t67
                             + b11_01 * t68 + b11_02 * t69;
-    S->blk[1][2].m[0][0] = t70;
+    S->e[30] = t70;
     const se23_real_t b21_10 = Bt->blk[2][1].m[1][0];
     const se23_real_t t71 = qa * b21_10;
     const se23_real_t b21_11 = Bt->blk[2][1].m[1][1];
@@ -170,7 +170,7 @@ void se23_cov_step9_noise(const se23_input_blocks_t *Bt, const se23_step_noise_t
     const se23_real_t t73 = qa * b21_12;
     const se23_real_t t74 = b10_00 * t38 + b10_01 * t39 + b10_02 * t40 + b11_00 * t71
                             + b11_01 * t72 + b11_02 * t73;
-    S->blk[1][2].m[0][1] = t74;
+    S->e[31] = t74;
     const se23_real_t b21_20 = Bt->blk[2][1].m[2][0];
     const se23_real_t t75 = qa * b21_20;
     const se23_real_t b21_21 = Bt->blk[2][1].m[2][1];
@@ -179,43 +179,43 @@ void se23_cov_step9_noise(const se23_input_blocks_t *Bt, const se23_step_noise_t
     const se23_real_t t77 = qa * b21_22;
     const se23_real_t t78 = b10_00 * t42 + b10_01 * t43 + b10_02 * t44 + b11_00 * t75
                             + b11_01 * t76 + b11_02 * t77;
-    S->blk[1][2].m[0][2] = t78;
+    S->e[32] = t78;
     const se23_real_t t79 = b10_10 * t34 + b10_11 * t35 + b10_12 * t36 + b11_10 * t67
                             + b11_11 * t68 + b11_12 * t69;
-    S->blk[1][2].m[1][0] = t79;
+    S->e[33] = t79;
     const se23_real_t t80 = b10_10 * t38 + b10_11 * t39 + b10_12 * t40 + b11_10 * t71
                             + b11_11 * t72 + b11_12 * t73;
-    S->blk[1][2].m[1][1] = t80;
+    S->e[34] = t80;
     const se23_real_t t81 = b10_10 * t42 + b10_11 * t43 + b10_12 * t44 + b11_10 * t75
                             + b11_11 * t76 + b11_12 * t77;
-    S->blk[1][2].m[1][2] = t81;
+    S->e[35] = t81;
     const se23_real_t t82 = b10_20 * t34 + b10_21 * t35 + b10_22 * t36 + b11_20 * t67
                             + b11_21 * t68 + b11_22 * t69;
-    S->blk[1][2].m[2][0] = t82;
+    S->e[36] = t82;
     const se23_real_t t83 = b10_20 * t38 + b10_21 * t39 + b10_22 * t40 + b11_20 * t71
                             + b11_21 * t72 + b11_22 * t73;
-    S->blk[1][2].m[2][1] = t83;
+    S->e[37] = t83;
     const se23_real_t t84 = b10_20 * t42 + b10_21 * t43 + b10_22 * t44 + b11_20 * t75
                             + b11_21 * t76 + b11_22 * t77;
-    S->blk[1][2].m[2][2] = t84;
+    S->e[38] = t84;
     const se23_real_t t85 = b20_00 * t34 + b20_01 * t35 + b20_02 * t36 + b21_00 * t67
                             + b21_01 * t68 + b21_02 * t69;
-    S->blk[2][2].m[0][0] = t85;
+    S->e[39] = t85;
     const se23_real_t t86 = b20_00 * t38 + b20_01 * t39 + b20_02 * t40 + b21_00 * t71
                             + b21_01 * t72 + b21_02 * t73;
-    S->blk[2][2].m[0][1] = t86;
+    S->e[40] = t86;
     const se23_real_t t87 = b20_00 * t42 + b20_01 * t43 + b20_02 * t44 + b21_00 * t75
                             + b21_01 * t76 + b21_02 * t77;
-    S->blk[2][2].m[0][2] = t87;
+    S->e[41] = t87;
     const se23_real_t t88 = b20_10 * t38 + b20_11 * t39 + b20_12 * t40 + b21_10 * t71
                             + b21_11 * t72 + b21_12 * t73;
-    S->blk[2][2].m[1][1] = t88;
+    S->e[42] = t88;
     const se23_real_t t89 = b20_10 * t42 + b20_11 * t43 + b20_12 * t44 + b21_10 * t75
                             + b21_11 * t76 + b21_12 * t77;
-    S->blk[2][2].m[1][2] = t89;
+    S->e[43] = t89;
     const se23_real_t t90 = b20_20 * t42 + b20_21 * t43 + b20_22 * t44 + b21_20 * t75
                             + b21_21 * t76 + b21_22 * t77;
-    S->blk[2][2].m[2][2] = t90;
+    S->e[44] = t90;
 }
 
 /* 15 states, first stage: the gyro-bias cross blocks, S = E's gyro terms:
@@ -477,163 +477,163 @@ void se23_cov_step15_gyro(const se23_pose_t *U, se23_real_t dt, const se23_input
     const se23_real_t t75 = t9 + qg * b00_02;
     const se23_real_t t76 = b00_00 * t73 + b00_01 * t74 + b00_02 * t75 + p0_9 * b00_00
                             + p0_10 * b00_01 + p0_11 * b00_02;
-    S->blk[0][0].m[0][0] = t76;
+    S->e[0] = t76;
     const se23_real_t t77 = t2 + qg * b00_10;
     const se23_real_t t78 = t6 + qg * b00_11;
     const se23_real_t t79 = t10 + qg * b00_12;
     const se23_real_t t80 = b00_00 * t77 + b00_01 * t78 + b00_02 * t79 + p0_9 * b00_10
                             + p0_10 * b00_11 + p0_11 * b00_12;
-    S->blk[0][0].m[0][1] = t80;
+    S->e[1] = t80;
     const se23_real_t t81 = t3 + qg * b00_20;
     const se23_real_t t82 = t7 + qg * b00_21;
     const se23_real_t t83 = t11 + qg * b00_22;
     const se23_real_t t84 = b00_00 * t81 + b00_01 * t82 + b00_02 * t83 + p0_9 * b00_20
                             + p0_10 * b00_21 + p0_11 * b00_22;
-    S->blk[0][0].m[0][2] = t84;
+    S->e[2] = t84;
     const se23_real_t t85 = b00_10 * t77 + b00_11 * t78 + b00_12 * t79 + p1_9 * b00_10
                             + p1_10 * b00_11 + p1_11 * b00_12;
-    S->blk[0][0].m[1][1] = t85;
+    S->e[3] = t85;
     const se23_real_t t86 = b00_10 * t81 + b00_11 * t82 + b00_12 * t83 + p1_9 * b00_20
                             + p1_10 * b00_21 + p1_11 * b00_22;
-    S->blk[0][0].m[1][2] = t86;
+    S->e[4] = t86;
     const se23_real_t t87 = b00_20 * t81 + b00_21 * t82 + b00_22 * t83 + p2_9 * b00_20
                             + p2_10 * b00_21 + p2_11 * b00_22;
-    S->blk[0][0].m[2][2] = t87;
+    S->e[5] = t87;
     const se23_real_t t88 = t20 + qg * b10_00;
     const se23_real_t t89 = t27 + qg * b10_01;
     const se23_real_t t90 = t34 + qg * b10_02;
     const se23_real_t t91 = b00_00 * t88 + b00_01 * t89 + b00_02 * t90 + p0_9 * b10_00
                             + p0_10 * b10_01 + p0_11 * b10_02;
-    S->blk[0][1].m[0][0] = t91;
+    S->e[6] = t91;
     const se23_real_t t92 = t22 + qg * b10_10;
     const se23_real_t t93 = t29 + qg * b10_11;
     const se23_real_t t94 = t36 + qg * b10_12;
     const se23_real_t t95 = b00_00 * t92 + b00_01 * t93 + b00_02 * t94 + p0_9 * b10_10
                             + p0_10 * b10_11 + p0_11 * b10_12;
-    S->blk[0][1].m[0][1] = t95;
+    S->e[7] = t95;
     const se23_real_t t96 = t24 + qg * b10_20;
     const se23_real_t t97 = t31 + qg * b10_21;
     const se23_real_t t98 = t38 + qg * b10_22;
     const se23_real_t t99 = b00_00 * t96 + b00_01 * t97 + b00_02 * t98 + p0_9 * b10_20
                             + p0_10 * b10_21 + p0_11 * b10_22;
-    S->blk[0][1].m[0][2] = t99;
+    S->e[8] = t99;
     const se23_real_t t100 = b00_10 * t88 + b00_11 * t89 + b00_12 * t90 + p1_9 * b10_00
                              + p1_10 * b10_01 + p1_11 * b10_02;
-    S->blk[0][1].m[1][0] = t100;
+    S->e[9] = t100;
     const se23_real_t t101 = b00_10 * t92 + b00_11 * t93 + b00_12 * t94 + p1_9 * b10_10
                              + p1_10 * b10_11 + p1_11 * b10_12;
-    S->blk[0][1].m[1][1] = t101;
+    S->e[10] = t101;
     const se23_real_t t102 = b00_10 * t96 + b00_11 * t97 + b00_12 * t98 + p1_9 * b10_20
                              + p1_10 * b10_21 + p1_11 * b10_22;
-    S->blk[0][1].m[1][2] = t102;
+    S->e[11] = t102;
     const se23_real_t t103 = b00_20 * t88 + b00_21 * t89 + b00_22 * t90 + p2_9 * b10_00
                              + p2_10 * b10_01 + p2_11 * b10_02;
-    S->blk[0][1].m[2][0] = t103;
+    S->e[12] = t103;
     const se23_real_t t104 = b00_20 * t92 + b00_21 * t93 + b00_22 * t94 + p2_9 * b10_10
                              + p2_10 * b10_11 + p2_11 * b10_12;
-    S->blk[0][1].m[2][1] = t104;
+    S->e[13] = t104;
     const se23_real_t t105 = b00_20 * t96 + b00_21 * t97 + b00_22 * t98 + p2_9 * b10_20
                              + p2_10 * b10_21 + p2_11 * b10_22;
-    S->blk[0][1].m[2][2] = t105;
+    S->e[14] = t105;
     const se23_real_t t106 = t47 + qg * b20_00;
     const se23_real_t t107 = t54 + qg * b20_01;
     const se23_real_t t108 = t61 + qg * b20_02;
     const se23_real_t t109 = b00_00 * t106 + b00_01 * t107 + b00_02 * t108 + p0_9 * b20_00
                              + p0_10 * b20_01 + p0_11 * b20_02;
-    S->blk[0][2].m[0][0] = t109;
+    S->e[15] = t109;
     const se23_real_t t110 = t49 + qg * b20_10;
     const se23_real_t t111 = t56 + qg * b20_11;
     const se23_real_t t112 = t63 + qg * b20_12;
     const se23_real_t t113 = b00_00 * t110 + b00_01 * t111 + b00_02 * t112 + p0_9 * b20_10
                              + p0_10 * b20_11 + p0_11 * b20_12;
-    S->blk[0][2].m[0][1] = t113;
+    S->e[16] = t113;
     const se23_real_t t114 = t51 + qg * b20_20;
     const se23_real_t t115 = t58 + qg * b20_21;
     const se23_real_t t116 = t65 + qg * b20_22;
     const se23_real_t t117 = b00_00 * t114 + b00_01 * t115 + b00_02 * t116 + p0_9 * b20_20
                              + p0_10 * b20_21 + p0_11 * b20_22;
-    S->blk[0][2].m[0][2] = t117;
+    S->e[17] = t117;
     const se23_real_t t118 = b00_10 * t106 + b00_11 * t107 + b00_12 * t108 + p1_9 * b20_00
                              + p1_10 * b20_01 + p1_11 * b20_02;
-    S->blk[0][2].m[1][0] = t118;
+    S->e[18] = t118;
     const se23_real_t t119 = b00_10 * t110 + b00_11 * t111 + b00_12 * t112 + p1_9 * b20_10
                              + p1_10 * b20_11 + p1_11 * b20_12;
-    S->blk[0][2].m[1][1] = t119;
+    S->e[19] = t119;
     const se23_real_t t120 = b00_10 * t114 + b00_11 * t115 + b00_12 * t116 + p1_9 * b20_20
                              + p1_10 * b20_21 + p1_11 * b20_22;
-    S->blk[0][2].m[1][2] = t120;
+    S->e[20] = t120;
     const se23_real_t t121 = b00_20 * t106 + b00_21 * t107 + b00_22 * t108 + p2_9 * b20_00
                              + p2_10 * b20_01 + p2_11 * b20_02;
-    S->blk[0][2].m[2][0] = t121;
+    S->e[21] = t121;
     const se23_real_t t122 = b00_20 * t110 + b00_21 * t111 + b00_22 * t112 + p2_9 * b20_10
                              + p2_10 * b20_11 + p2_11 * b20_12;
-    S->blk[0][2].m[2][1] = t122;
+    S->e[22] = t122;
     const se23_real_t t123 = b00_20 * t114 + b00_21 * t115 + b00_22 * t116 + p2_9 * b20_20
                              + p2_10 * b20_21 + p2_11 * b20_22;
-    S->blk[0][2].m[2][2] = t123;
+    S->e[23] = t123;
     const se23_real_t t124 = b10_00 * t88 + b10_01 * t89 + b10_02 * t90 + t19 * b10_00
                              + t26 * b10_01 + t33 * b10_02;
-    S->blk[1][1].m[0][0] = t124;
+    S->e[24] = t124;
     const se23_real_t t125 = b10_00 * t92 + b10_01 * t93 + b10_02 * t94 + t19 * b10_10
                              + t26 * b10_11 + t33 * b10_12;
-    S->blk[1][1].m[0][1] = t125;
+    S->e[25] = t125;
     const se23_real_t t126 = b10_00 * t96 + b10_01 * t97 + b10_02 * t98 + t19 * b10_20
                              + t26 * b10_21 + t33 * b10_22;
-    S->blk[1][1].m[0][2] = t126;
+    S->e[26] = t126;
     const se23_real_t t127 = b10_10 * t92 + b10_11 * t93 + b10_12 * t94 + t21 * b10_10
                              + t28 * b10_11 + t35 * b10_12;
-    S->blk[1][1].m[1][1] = t127;
+    S->e[27] = t127;
     const se23_real_t t128 = b10_10 * t96 + b10_11 * t97 + b10_12 * t98 + t21 * b10_20
                              + t28 * b10_21 + t35 * b10_22;
-    S->blk[1][1].m[1][2] = t128;
+    S->e[28] = t128;
     const se23_real_t t129 = b10_20 * t96 + b10_21 * t97 + b10_22 * t98 + t23 * b10_20
                              + t30 * b10_21 + t37 * b10_22;
-    S->blk[1][1].m[2][2] = t129;
+    S->e[29] = t129;
     const se23_real_t t130 = b10_00 * t106 + b10_01 * t107 + b10_02 * t108 + t19 * b20_00
                              + t26 * b20_01 + t33 * b20_02;
-    S->blk[1][2].m[0][0] = t130;
+    S->e[30] = t130;
     const se23_real_t t131 = b10_00 * t110 + b10_01 * t111 + b10_02 * t112 + t19 * b20_10
                              + t26 * b20_11 + t33 * b20_12;
-    S->blk[1][2].m[0][1] = t131;
+    S->e[31] = t131;
     const se23_real_t t132 = b10_00 * t114 + b10_01 * t115 + b10_02 * t116 + t19 * b20_20
                              + t26 * b20_21 + t33 * b20_22;
-    S->blk[1][2].m[0][2] = t132;
+    S->e[32] = t132;
     const se23_real_t t133 = b10_10 * t106 + b10_11 * t107 + b10_12 * t108 + t21 * b20_00
                              + t28 * b20_01 + t35 * b20_02;
-    S->blk[1][2].m[1][0] = t133;
+    S->e[33] = t133;
     const se23_real_t t134 = b10_10 * t110 + b10_11 * t111 + b10_12 * t112 + t21 * b20_10
                              + t28 * b20_11 + t35 * b20_12;
-    S->blk[1][2].m[1][1] = t134;
+    S->e[34] = t134;
     const se23_real_t t135 = b10_10 * t114 + b10_11 * t115 + b10_12 * t116 + t21 * b20_20
                              + t28 * b20_21 + t35 * b20_22;
-    S->blk[1][2].m[1][2] = t135;
+    S->e[35] = t135;
     const se23_real_t t136 = b10_20 * t106 + b10_21 * t107 + b10_22 * t108 + t23 * b20_00
                              + t30 * b20_01 + t37 * b20_02;
-    S->blk[1][2].m[2][0] = t136;
+    S->e[36] = t136;
     const se23_real_t t137 = b10_20 * t110 + b10_21 * t111 + b10_22 * t112 + t23 * b20_10
                              + t30 * b20_11 + t37 * b20_12;
-    S->blk[1][2].m[2][1] = t137;
+    S->e[37] = t137;
     const se23_real_t t138 = b10_20 * t114 + b10_21 * t115 + b10_22 * t116 + t23 * b20_20
                              + t30 * b20_21 + t37 * b20_22;
-    S->blk[1][2].m[2][2] = t138;
+    S->e[38] = t138;
     const se23_real_t t139 = b20_00 * t106 + b20_01 * t107 + b20_02 * t108 + t46 * b20_00
                              + t53 * b20_01 + t60 * b20_02;
-    S->blk[2][2].m[0][0] = t139;
+    S->e[39] = t139;
     const se23_real_t t140 = b20_00 * t110 + b20_01 * t111 + b20_02 * t112 + t46 * b20_10
                              + t53 * b20_11 + t60 * b20_12;
-    S->blk[2][2].m[0][1] = t140;
+    S->e[40] = t140;
     const se23_real_t t141 = b20_00 * t114 + b20_01 * t115 + b20_02 * t116 + t46 * b20_20
                              + t53 * b20_21 + t60 * b20_22;
-    S->blk[2][2].m[0][2] = t141;
+    S->e[41] = t141;
     const se23_real_t t142 = b20_10 * t110 + b20_11 * t111 + b20_12 * t112 + t48 * b20_10
                              + t55 * b20_11 + t62 * b20_12;
-    S->blk[2][2].m[1][1] = t142;
+    S->e[42] = t142;
     const se23_real_t t143 = b20_10 * t114 + b20_11 * t115 + b20_12 * t116 + t48 * b20_20
                              + t55 * b20_21 + t62 * b20_22;
-    S->blk[2][2].m[1][2] = t143;
+    S->e[43] = t143;
     const se23_real_t t144 = b20_20 * t114 + b20_21 * t115 + b20_22 * t116 + t50 * b20_20
                              + t57 * b20_21 + t64 * b20_22;
-    S->blk[2][2].m[2][2] = t144;
+    S->e[44] = t144;
 }
 
 /* 15 states, second stage: the accel-bias cross blocks, the bias block, S
@@ -890,163 +890,163 @@ void se23_cov_step15_accel(const se23_pose_t *U, se23_real_t dt, const se23_inpu
     out[(stride * 13) + 8] = t71;
     out[(stride * 8) + 14] = t72;
     out[(stride * 14) + 8] = t72;
-    const se23_real_t s01_00 = S->blk[0][1].m[0][0];
+    const se23_real_t s01_00 = S->e[6];
     const se23_real_t t73 = s01_00 + p0_12 * b11_00 + p0_13 * b11_01 + p0_14 * b11_02;
-    S->blk[0][1].m[0][0] = t73;
-    const se23_real_t s01_01 = S->blk[0][1].m[0][1];
+    S->e[6] = t73;
+    const se23_real_t s01_01 = S->e[7];
     const se23_real_t t74 = s01_01 + p0_12 * b11_10 + p0_13 * b11_11 + p0_14 * b11_12;
-    S->blk[0][1].m[0][1] = t74;
-    const se23_real_t s01_02 = S->blk[0][1].m[0][2];
+    S->e[7] = t74;
+    const se23_real_t s01_02 = S->e[8];
     const se23_real_t t75 = s01_02 + p0_12 * b11_20 + p0_13 * b11_21 + p0_14 * b11_22;
-    S->blk[0][1].m[0][2] = t75;
-    const se23_real_t s01_10 = S->blk[0][1].m[1][0];
+    S->e[8] = t75;
+    const se23_real_t s01_10 = S->e[9];
     const se23_real_t t76 = s01_10 + p1_12 * b11_00 + p1_13 * b11_01 + p1_14 * b11_02;
-    S->blk[0][1].m[1][0] = t76;
-    const se23_real_t s01_11 = S->blk[0][1].m[1][1];
+    S->e[9] = t76;
+    const se23_real_t s01_11 = S->e[10];
     const se23_real_t t77 = s01_11 + p1_12 * b11_10 + p1_13 * b11_11 + p1_14 * b11_12;
-    S->blk[0][1].m[1][1] = t77;
-    const se23_real_t s01_12 = S->blk[0][1].m[1][2];
+    S->e[10] = t77;
+    const se23_real_t s01_12 = S->e[11];
     const se23_real_t t78 = s01_12 + p1_12 * b11_20 + p1_13 * b11_21 + p1_14 * b11_22;
-    S->blk[0][1].m[1][2] = t78;
-    const se23_real_t s01_20 = S->blk[0][1].m[2][0];
+    S->e[11] = t78;
+    const se23_real_t s01_20 = S->e[12];
     const se23_real_t t79 = s01_20 + p2_12 * b11_00 + p2_13 * b11_01 + p2_14 * b11_02;
-    S->blk[0][1].m[2][0] = t79;
-    const se23_real_t s01_21 = S->blk[0][1].m[2][1];
+    S->e[12] = t79;
+    const se23_real_t s01_21 = S->e[13];
     const se23_real_t t80 = s01_21 + p2_12 * b11_10 + p2_13 * b11_11 + p2_14 * b11_12;
-    S->blk[0][1].m[2][1] = t80;
-    const se23_real_t s01_22 = S->blk[0][1].m[2][2];
+    S->e[13] = t80;
+    const se23_real_t s01_22 = S->e[14];
     const se23_real_t t81 = s01_22 + p2_12 * b11_20 + p2_13 * b11_21 + p2_14 * b11_22;
-    S->blk[0][1].m[2][2] = t81;
-    const se23_real_t s02_00 = S->blk[0][2].m[0][0];
+    S->e[14] = t81;
+    const se23_real_t s02_00 = S->e[15];
     const se23_real_t t82 = s02_00 + p0_12 * b21_00 + p0_13 * b21_01 + p0_14 * b21_02;
-    S->blk[0][2].m[0][0] = t82;
-    const se23_real_t s02_01 = S->blk[0][2].m[0][1];
+    S->e[15] = t82;
+    const se23_real_t s02_01 = S->e[16];
     const se23_real_t t83 = s02_01 + p0_12 * b21_10 + p0_13 * b21_11 + p0_14 * b21_12;
-    S->blk[0][2].m[0][1] = t83;
-    const se23_real_t s02_02 = S->blk[0][2].m[0][2];
+    S->e[16] = t83;
+    const se23_real_t s02_02 = S->e[17];
     const se23_real_t t84 = s02_02 + p0_12 * b21_20 + p0_13 * b21_21 + p0_14 * b21_22;
-    S->blk[0][2].m[0][2] = t84;
-    const se23_real_t s02_10 = S->blk[0][2].m[1][0];
+    S->e[17] = t84;
+    const se23_real_t s02_10 = S->e[18];
     const se23_real_t t85 = s02_10 + p1_12 * b21_00 + p1_13 * b21_01 + p1_14 * b21_02;
-    S->blk[0][2].m[1][0] = t85;
-    const se23_real_t s02_11 = S->blk[0][2].m[1][1];
+    S->e[18] = t85;
+    const se23_real_t s02_11 = S->e[19];
     const se23_real_t t86 = s02_11 + p1_12 * b21_10 + p1_13 * b21_11 + p1_14 * b21_12;
-    S->blk[0][2].m[1][1] = t86;
-    const se23_real_t s02_12 = S->blk[0][2].m[1][2];
+    S->e[19] = t86;
+    const se23_real_t s02_12 = S->e[20];
     const se23_real_t t87 = s02_12 + p1_12 * b21_20 + p1_13 * b21_21 + p1_14 * b21_22;
-    S->blk[0][2].m[1][2] = t87;
-    const se23_real_t s02_20 = S->blk[0][2].m[2][0];
+    S->e[20] = t87;
+    const se23_real_t s02_20 = S->e[21];
     const se23_real_t t88 = s02_20 + p2_12 * b21_00 + p2_13 * b21_01 + p2_14 * b21_02;
-    S->blk[0][2].m[2][0] = t88;
-    const se23_real_t s02_21 = S->blk[0][2].m[2][1];
+    S->e[21] = t88;
+    const se23_real_t s02_21 = S->e[22];
     const se23_real_t t89 = s02_21 + p2_12 * b21_10 + p2_13 * b21_11 + p2_14 * b21_12;
-    S->blk[0][2].m[2][1] = t89;
-    const se23_real_t s02_22 = S->blk[0][2].m[2][2];
+    S->e[22] = t89;
+    const se23_real_t s02_22 = S->e[23];
     const se23_real_t t90 = s02_22 + p2_12 * b21_20 + p2_13 * b21_21 + p2_14 * b21_22;
-    S->blk[0][2].m[2][2] = t90;
+    S->e[23] = t90;
     const se23_real_t qa = q->qa;
     const se23_real_t t91 = t20 + qa * b11_00;
     const se23_real_t t92 = t27 + qa * b11_01;
     const se23_real_t t93 = t34 + qa * b11_02;
-    const se23_real_t s11_00 = S->blk[1][1].m[0][0];
+    const se23_real_t s11_00 = S->e[24];
     const se23_real_t t94 = s11_00 + b11_00 * t91 + b11_01 * t92 + b11_02 * t93 + t19 * b11_00
                             + t26 * b11_01 + t33 * b11_02;
-    S->blk[1][1].m[0][0] = t94;
+    S->e[24] = t94;
     const se23_real_t t95 = t22 + qa * b11_10;
     const se23_real_t t96 = t29 + qa * b11_11;
     const se23_real_t t97 = t36 + qa * b11_12;
-    const se23_real_t s11_01 = S->blk[1][1].m[0][1];
+    const se23_real_t s11_01 = S->e[25];
     const se23_real_t t98 = s11_01 + b11_00 * t95 + b11_01 * t96 + b11_02 * t97 + t19 * b11_10
                             + t26 * b11_11 + t33 * b11_12;
-    S->blk[1][1].m[0][1] = t98;
+    S->e[25] = t98;
     const se23_real_t t99 = t24 + qa * b11_20;
     const se23_real_t t100 = t31 + qa * b11_21;
     const se23_real_t t101 = t38 + qa * b11_22;
-    const se23_real_t s11_02 = S->blk[1][1].m[0][2];
+    const se23_real_t s11_02 = S->e[26];
     const se23_real_t t102 = s11_02 + b11_00 * t99 + b11_01 * t100 + b11_02 * t101
                              + t19 * b11_20 + t26 * b11_21 + t33 * b11_22;
-    S->blk[1][1].m[0][2] = t102;
-    const se23_real_t s11_11 = S->blk[1][1].m[1][1];
+    S->e[26] = t102;
+    const se23_real_t s11_11 = S->e[27];
     const se23_real_t t103 = s11_11 + b11_10 * t95 + b11_11 * t96 + b11_12 * t97 + t21 * b11_10
                              + t28 * b11_11 + t35 * b11_12;
-    S->blk[1][1].m[1][1] = t103;
-    const se23_real_t s11_12 = S->blk[1][1].m[1][2];
+    S->e[27] = t103;
+    const se23_real_t s11_12 = S->e[28];
     const se23_real_t t104 = s11_12 + b11_10 * t99 + b11_11 * t100 + b11_12 * t101
                              + t21 * b11_20 + t28 * b11_21 + t35 * b11_22;
-    S->blk[1][1].m[1][2] = t104;
-    const se23_real_t s11_22 = S->blk[1][1].m[2][2];
+    S->e[28] = t104;
+    const se23_real_t s11_22 = S->e[29];
     const se23_real_t t105 = s11_22 + b11_20 * t99 + b11_21 * t100 + b11_22 * t101
                              + t23 * b11_20 + t30 * b11_21 + t37 * b11_22;
-    S->blk[1][1].m[2][2] = t105;
+    S->e[29] = t105;
     const se23_real_t t106 = t47 + qa * b21_00;
     const se23_real_t t107 = t54 + qa * b21_01;
     const se23_real_t t108 = t61 + qa * b21_02;
-    const se23_real_t s12_00 = S->blk[1][2].m[0][0];
+    const se23_real_t s12_00 = S->e[30];
     const se23_real_t t109 = s12_00 + b11_00 * t106 + b11_01 * t107 + b11_02 * t108
                              + t19 * b21_00 + t26 * b21_01 + t33 * b21_02;
-    S->blk[1][2].m[0][0] = t109;
+    S->e[30] = t109;
     const se23_real_t t110 = t49 + qa * b21_10;
     const se23_real_t t111 = t56 + qa * b21_11;
     const se23_real_t t112 = t63 + qa * b21_12;
-    const se23_real_t s12_01 = S->blk[1][2].m[0][1];
+    const se23_real_t s12_01 = S->e[31];
     const se23_real_t t113 = s12_01 + b11_00 * t110 + b11_01 * t111 + b11_02 * t112
                              + t19 * b21_10 + t26 * b21_11 + t33 * b21_12;
-    S->blk[1][2].m[0][1] = t113;
+    S->e[31] = t113;
     const se23_real_t t114 = t51 + qa * b21_20;
     const se23_real_t t115 = t58 + qa * b21_21;
     const se23_real_t t116 = t65 + qa * b21_22;
-    const se23_real_t s12_02 = S->blk[1][2].m[0][2];
+    const se23_real_t s12_02 = S->e[32];
     const se23_real_t t117 = s12_02 + b11_00 * t114 + b11_01 * t115 + b11_02 * t116
                              + t19 * b21_20 + t26 * b21_21 + t33 * b21_22;
-    S->blk[1][2].m[0][2] = t117;
-    const se23_real_t s12_10 = S->blk[1][2].m[1][0];
+    S->e[32] = t117;
+    const se23_real_t s12_10 = S->e[33];
     const se23_real_t t118 = s12_10 + b11_10 * t106 + b11_11 * t107 + b11_12 * t108
                              + t21 * b21_00 + t28 * b21_01 + t35 * b21_02;
-    S->blk[1][2].m[1][0] = t118;
-    const se23_real_t s12_11 = S->blk[1][2].m[1][1];
+    S->e[33] = t118;
+    const se23_real_t s12_11 = S->e[34];
     const se23_real_t t119 = s12_11 + b11_10 * t110 + b11_11 * t111 + b11_12 * t112
                              + t21 * b21_10 + t28 * b21_11 + t35 * b21_12;
-    S->blk[1][2].m[1][1] = t119;
-    const se23_real_t s12_12 = S->blk[1][2].m[1][2];
+    S->e[34] = t119;
+    const se23_real_t s12_12 = S->e[35];
     const se23_real_t t120 = s12_12 + b11_10 * t114 + b11_11 * t115 + b11_12 * t116
                              + t21 * b21_20 + t28 * b21_21 + t35 * b21_22;
-    S->blk[1][2].m[1][2] = t120;
-    const se23_real_t s12_20 = S->blk[1][2].m[2][0];
+    S->e[35] = t120;
+    const se23_real_t s12_20 = S->e[36];
     const se23_real_t t121 = s12_20 + b11_20 * t106 + b11_21 * t107 + b11_22 * t108
                              + t23 * b21_00 + t30 * b21_01 + t37 * b21_02;
-    S->blk[1][2].m[2][0] = t121;
-    const se23_real_t s12_21 = S->blk[1][2].m[2][1];
+    S->e[36] = t121;
+    const se23_real_t s12_21 = S->e[37];
     const se23_real_t t122 = s12_21 + b11_20 * t110 + b11_21 * t111 + b11_22 * t112
                              + t23 * b21_10 + t30 * b21_11 + t37 * b21_12;
-    S->blk[1][2].m[2][1] = t122;
-    const se23_real_t s12_22 = S->blk[1][2].m[2][2];
+    S->e[37] = t122;
+    const se23_real_t s12_22 = S->e[38];
     const se23_real_t t123 = s12_22 + b11_20 * t114 + b11_21 * t115 + b11_22 * t116
                              + t23 * b21_20 + t30 * b21_21 + t37 * b21_22;
-    S->blk[1][2].m[2][2] = t123;
-    const se23_real_t s22_00 = S->blk[2][2].m[0][0];
+    S->e[38] = t123;
+    const se23_real_t s22_00 = S->e[39];
     const se23_real_t t124 = s22_00 + b21_00 * t106 + b21_01 * t107 + b21_02 * t108
                              + t46 * b21_00 + t53 * b21_01 + t60 * b21_02;
-    S->blk[2][2].m[0][0] = t124;
-    const se23_real_t s22_01 = S->blk[2][2].m[0][1];
+    S->e[39] = t124;
+    const se23_real_t s22_01 = S->e[40];
     const se23_real_t t125 = s22_01 + b21_00 * t110 + b21_01 * t111 + b21_02 * t112
                              + t46 * b21_10 + t53 * b21_11 + t60 * b21_12;
-    S->blk[2][2].m[0][1] = t125;
-    const se23_real_t s22_02 = S->blk[2][2].m[0][2];
+    S->e[40] = t125;
+    const se23_real_t s22_02 = S->e[41];
     const se23_real_t t126 = s22_02 + b21_00 * t114 + b21_01 * t115 + b21_02 * t116
                              + t46 * b21_20 + t53 * b21_21 + t60 * b21_22;
-    S->blk[2][2].m[0][2] = t126;
-    const se23_real_t s22_11 = S->blk[2][2].m[1][1];
+    S->e[41] = t126;
+    const se23_real_t s22_11 = S->e[42];
     const se23_real_t t127 = s22_11 + b21_10 * t110 + b21_11 * t111 + b21_12 * t112
                              + t48 * b21_10 + t55 * b21_11 + t62 * b21_12;
-    S->blk[2][2].m[1][1] = t127;
-    const se23_real_t s22_12 = S->blk[2][2].m[1][2];
+    S->e[42] = t127;
+    const se23_real_t s22_12 = S->e[43];
     const se23_real_t t128 = s22_12 + b21_10 * t114 + b21_11 * t115 + b21_12 * t116
                              + t48 * b21_20 + t55 * b21_21 + t62 * b21_22;
-    S->blk[2][2].m[1][2] = t128;
-    const se23_real_t s22_22 = S->blk[2][2].m[2][2];
+    S->e[43] = t128;
+    const se23_real_t s22_22 = S->e[44];
     const se23_real_t t129 = s22_22 + b21_20 * t114 + b21_21 * t115 + b21_22 * t116
                              + t50 * b21_20 + t57 * b21_21 + t64 * b21_22;
-    S->blk[2][2].m[2][2] = t129;
+    S->e[44] = t129;
     const se23_real_t p9_9 = P[(stride * 9) + 9];
     const se23_real_t wg = q->wg;
     const se23_real_t t130 = p9_9 + wg;
@@ -1121,9 +1121,9 @@ void se23_cov_shear_pose(const se23_pose_t *U, se23_real_t dt, const se23_real_t
     const se23_real_t t3 = p2_6 + dt * p2_3 + pos2 * p1_2 - pos1 * p2_2;
     const se23_real_t p3_3 = P[(stride * 3) + 3];
     const se23_real_t t4 = p3_6 + dt * p3_3 + pos2 * p1_3 - pos1 * p2_3;
-    const se23_real_t s22_00 = S->blk[2][2].m[0][0];
+    const se23_real_t s22_00 = S->e[39];
     const se23_real_t t5 = t1 + s22_00 + t2 * pos2 - t3 * pos1 + t4 * dt;
-    S->blk[2][2].m[0][0] = t5;
+    S->e[39] = t5;
     const se23_real_t p6_7 = P[(stride * 6) + 7];
     const se23_real_t p3_7 = P[(stride * 3) + 7];
     const se23_real_t p1_7 = P[stride + 7];
@@ -1139,10 +1139,10 @@ void se23_cov_shear_pose(const se23_pose_t *U, se23_real_t dt, const se23_real_t
     const se23_real_t p1_4 = P[stride + 4];
     const se23_real_t p2_4 = P[(stride * 2) + 4];
     const se23_real_t t8 = p4_6 + dt * p3_4 + pos2 * p1_4 - pos1 * p2_4;
-    const se23_real_t s22_01 = S->blk[2][2].m[0][1];
+    const se23_real_t s22_01 = S->e[40];
     const se23_real_t pos0 = U->p.v[0];
     const se23_real_t t9 = t6 + s22_01 - t7 * pos2 + t3 * pos0 + t8 * dt;
-    S->blk[2][2].m[0][1] = t9;
+    S->e[40] = t9;
     const se23_real_t p6_8 = P[(stride * 6) + 8];
     const se23_real_t p3_8 = P[(stride * 3) + 8];
     const se23_real_t p1_8 = P[stride + 8];
@@ -1153,9 +1153,9 @@ void se23_cov_shear_pose(const se23_pose_t *U, se23_real_t dt, const se23_real_t
     const se23_real_t p1_5 = P[stride + 5];
     const se23_real_t p2_5 = P[(stride * 2) + 5];
     const se23_real_t t11 = p5_6 + dt * p3_5 + pos2 * p1_5 - pos1 * p2_5;
-    const se23_real_t s22_02 = S->blk[2][2].m[0][2];
+    const se23_real_t s22_02 = S->e[41];
     const se23_real_t t12 = t10 + s22_02 + t7 * pos1 - t2 * pos0 + t11 * dt;
-    S->blk[2][2].m[0][2] = t12;
+    S->e[41] = t12;
     const se23_real_t p7_7 = P[(stride * 7) + 7];
     const se23_real_t p4_7 = P[(stride * 4) + 7];
     const se23_real_t p0_7 = P[7];
@@ -1166,9 +1166,9 @@ void se23_cov_shear_pose(const se23_pose_t *U, se23_real_t dt, const se23_real_t
     const se23_real_t t15 = p2_7 + dt * p2_4 - pos2 * p0_2 + pos0 * p2_2;
     const se23_real_t p4_4 = P[(stride * 4) + 4];
     const se23_real_t t16 = p4_7 + dt * p4_4 - pos2 * p0_4 + pos0 * p2_4;
-    const se23_real_t s22_11 = S->blk[2][2].m[1][1];
+    const se23_real_t s22_11 = S->e[42];
     const se23_real_t t17 = t13 + s22_11 - t14 * pos2 + t15 * pos0 + t16 * dt;
-    S->blk[2][2].m[1][1] = t17;
+    S->e[42] = t17;
     const se23_real_t p7_8 = P[(stride * 7) + 8];
     const se23_real_t p4_8 = P[(stride * 4) + 8];
     const se23_real_t p0_8 = P[8];
@@ -1178,9 +1178,9 @@ void se23_cov_shear_pose(const se23_pose_t *U, se23_real_t dt, const se23_real_t
     const se23_real_t p4_5 = P[(stride * 4) + 5];
     const se23_real_t p0_5 = P[5];
     const se23_real_t t20 = p5_7 + dt * p4_5 - pos2 * p0_5 + pos0 * p2_5;
-    const se23_real_t s22_12 = S->blk[2][2].m[1][2];
+    const se23_real_t s22_12 = S->e[43];
     const se23_real_t t21 = t18 + s22_12 + t14 * pos1 - t19 * pos0 + t20 * dt;
-    S->blk[2][2].m[1][2] = t21;
+    S->e[43] = t21;
     const se23_real_t p8_8 = P[(stride * 8) + 8];
     const se23_real_t p5_8 = P[(stride * 5) + 8];
     const se23_real_t t22 = p8_8 + dt * p5_8 + pos1 * p0_8 - pos0 * p1_8;
@@ -1188,156 +1188,156 @@ void se23_cov_shear_pose(const se23_pose_t *U, se23_real_t dt, const se23_real_t
     const se23_real_t t24 = p1_8 + dt * p1_5 + pos1 * p0_1 - pos0 * p1_1;
     const se23_real_t p5_5 = P[(stride * 5) + 5];
     const se23_real_t t25 = p5_8 + dt * p5_5 + pos1 * p0_5 - pos0 * p1_5;
-    const se23_real_t s22_22 = S->blk[2][2].m[2][2];
+    const se23_real_t s22_22 = S->e[44];
     const se23_real_t t26 = t22 + s22_22 + t23 * pos1 - t24 * pos0 + t25 * dt;
-    S->blk[2][2].m[2][2] = t26;
+    S->e[44] = t26;
     const se23_real_t vel2 = U->v.v[2];
     const se23_real_t vel1 = U->v.v[1];
     const se23_real_t t27 = p3_6 + vel2 * p1_6 - vel1 * p2_6;
     const se23_real_t t28 = p1_3 + vel2 * p1_1 - vel1 * p1_2;
     const se23_real_t t29 = p2_3 + vel2 * p1_2 - vel1 * p2_2;
     const se23_real_t t30 = p3_3 + vel2 * p1_3 - vel1 * p2_3;
-    const se23_real_t s12_00 = S->blk[1][2].m[0][0];
+    const se23_real_t s12_00 = S->e[30];
     const se23_real_t t31 = t27 + s12_00 + t28 * pos2 - t29 * pos1 + t30 * dt;
-    S->blk[1][2].m[0][0] = t31;
+    S->e[30] = t31;
     const se23_real_t t32 = p3_7 + vel2 * p1_7 - vel1 * p2_7;
     const se23_real_t t33 = p0_3 + vel2 * p0_1 - vel1 * p0_2;
     const se23_real_t t34 = p3_4 + vel2 * p1_4 - vel1 * p2_4;
-    const se23_real_t s12_01 = S->blk[1][2].m[0][1];
+    const se23_real_t s12_01 = S->e[31];
     const se23_real_t t35 = t32 + s12_01 - t33 * pos2 + t29 * pos0 + t34 * dt;
-    S->blk[1][2].m[0][1] = t35;
+    S->e[31] = t35;
     const se23_real_t t36 = p3_8 + vel2 * p1_8 - vel1 * p2_8;
     const se23_real_t t37 = p3_5 + vel2 * p1_5 - vel1 * p2_5;
-    const se23_real_t s12_02 = S->blk[1][2].m[0][2];
+    const se23_real_t s12_02 = S->e[32];
     const se23_real_t t38 = t36 + s12_02 + t33 * pos1 - t28 * pos0 + t37 * dt;
-    S->blk[1][2].m[0][2] = t38;
+    S->e[32] = t38;
     const se23_real_t vel0 = U->v.v[0];
     const se23_real_t t39 = p4_6 - vel2 * p0_6 + vel0 * p2_6;
     const se23_real_t t40 = p1_4 - vel2 * p0_1 + vel0 * p1_2;
     const se23_real_t t41 = p2_4 - vel2 * p0_2 + vel0 * p2_2;
     const se23_real_t t42 = p3_4 - vel2 * p0_3 + vel0 * p2_3;
-    const se23_real_t s12_10 = S->blk[1][2].m[1][0];
+    const se23_real_t s12_10 = S->e[33];
     const se23_real_t t43 = t39 + s12_10 + t40 * pos2 - t41 * pos1 + t42 * dt;
-    S->blk[1][2].m[1][0] = t43;
+    S->e[33] = t43;
     const se23_real_t t44 = p4_7 - vel2 * p0_7 + vel0 * p2_7;
     const se23_real_t t45 = p0_4 - vel2 * p0_0 + vel0 * p0_2;
     const se23_real_t t46 = p4_4 - vel2 * p0_4 + vel0 * p2_4;
-    const se23_real_t s12_11 = S->blk[1][2].m[1][1];
+    const se23_real_t s12_11 = S->e[34];
     const se23_real_t t47 = t44 + s12_11 - t45 * pos2 + t41 * pos0 + t46 * dt;
-    S->blk[1][2].m[1][1] = t47;
+    S->e[34] = t47;
     const se23_real_t t48 = p4_8 - vel2 * p0_8 + vel0 * p2_8;
     const se23_real_t t49 = p4_5 - vel2 * p0_5 + vel0 * p2_5;
-    const se23_real_t s12_12 = S->blk[1][2].m[1][2];
+    const se23_real_t s12_12 = S->e[35];
     const se23_real_t t50 = t48 + s12_12 + t45 * pos1 - t40 * pos0 + t49 * dt;
-    S->blk[1][2].m[1][2] = t50;
+    S->e[35] = t50;
     const se23_real_t t51 = p5_6 + vel1 * p0_6 - vel0 * p1_6;
     const se23_real_t t52 = p1_5 + vel1 * p0_1 - vel0 * p1_1;
     const se23_real_t t53 = p2_5 + vel1 * p0_2 - vel0 * p1_2;
     const se23_real_t t54 = p3_5 + vel1 * p0_3 - vel0 * p1_3;
-    const se23_real_t s12_20 = S->blk[1][2].m[2][0];
+    const se23_real_t s12_20 = S->e[36];
     const se23_real_t t55 = t51 + s12_20 + t52 * pos2 - t53 * pos1 + t54 * dt;
-    S->blk[1][2].m[2][0] = t55;
+    S->e[36] = t55;
     const se23_real_t t56 = p5_7 + vel1 * p0_7 - vel0 * p1_7;
     const se23_real_t t57 = p0_5 + vel1 * p0_0 - vel0 * p0_1;
     const se23_real_t t58 = p4_5 + vel1 * p0_4 - vel0 * p1_4;
-    const se23_real_t s12_21 = S->blk[1][2].m[2][1];
+    const se23_real_t s12_21 = S->e[37];
     const se23_real_t t59 = t56 + s12_21 - t57 * pos2 + t53 * pos0 + t58 * dt;
-    S->blk[1][2].m[2][1] = t59;
+    S->e[37] = t59;
     const se23_real_t t60 = p5_8 + vel1 * p0_8 - vel0 * p1_8;
     const se23_real_t t61 = p5_5 + vel1 * p0_5 - vel0 * p1_5;
-    const se23_real_t s12_22 = S->blk[1][2].m[2][2];
+    const se23_real_t s12_22 = S->e[38];
     const se23_real_t t62 = t60 + s12_22 + t57 * pos1 - t52 * pos0 + t61 * dt;
-    S->blk[1][2].m[2][2] = t62;
-    const se23_real_t s11_00 = S->blk[1][1].m[0][0];
+    S->e[38] = t62;
+    const se23_real_t s11_00 = S->e[24];
     const se23_real_t t63 = t30 + s11_00 + t28 * vel2 - t29 * vel1;
-    S->blk[1][1].m[0][0] = t63;
-    const se23_real_t s11_01 = S->blk[1][1].m[0][1];
+    S->e[24] = t63;
+    const se23_real_t s11_01 = S->e[25];
     const se23_real_t t64 = t34 + s11_01 - t33 * vel2 + t29 * vel0;
-    S->blk[1][1].m[0][1] = t64;
-    const se23_real_t s11_02 = S->blk[1][1].m[0][2];
+    S->e[25] = t64;
+    const se23_real_t s11_02 = S->e[26];
     const se23_real_t t65 = t37 + s11_02 + t33 * vel1 - t28 * vel0;
-    S->blk[1][1].m[0][2] = t65;
-    const se23_real_t s11_11 = S->blk[1][1].m[1][1];
+    S->e[26] = t65;
+    const se23_real_t s11_11 = S->e[27];
     const se23_real_t t66 = t46 + s11_11 - t45 * vel2 + t41 * vel0;
-    S->blk[1][1].m[1][1] = t66;
-    const se23_real_t s11_12 = S->blk[1][1].m[1][2];
+    S->e[27] = t66;
+    const se23_real_t s11_12 = S->e[28];
     const se23_real_t t67 = t49 + s11_12 + t45 * vel1 - t40 * vel0;
-    S->blk[1][1].m[1][2] = t67;
-    const se23_real_t s11_22 = S->blk[1][1].m[2][2];
+    S->e[28] = t67;
+    const se23_real_t s11_22 = S->e[29];
     const se23_real_t t68 = t61 + s11_22 + t57 * vel1 - t52 * vel0;
-    S->blk[1][1].m[2][2] = t68;
-    const se23_real_t s02_00 = S->blk[0][2].m[0][0];
+    S->e[29] = t68;
+    const se23_real_t s02_00 = S->e[15];
     const se23_real_t t69 = p0_6 + s02_00 + p0_1 * pos2 - p0_2 * pos1 + p0_3 * dt;
-    S->blk[0][2].m[0][0] = t69;
-    const se23_real_t s02_01 = S->blk[0][2].m[0][1];
+    S->e[15] = t69;
+    const se23_real_t s02_01 = S->e[16];
     const se23_real_t t70 = p0_7 + s02_01 - p0_0 * pos2 + p0_2 * pos0 + p0_4 * dt;
-    S->blk[0][2].m[0][1] = t70;
-    const se23_real_t s02_02 = S->blk[0][2].m[0][2];
+    S->e[16] = t70;
+    const se23_real_t s02_02 = S->e[17];
     const se23_real_t t71 = p0_8 + s02_02 + p0_0 * pos1 - p0_1 * pos0 + p0_5 * dt;
-    S->blk[0][2].m[0][2] = t71;
-    const se23_real_t s02_10 = S->blk[0][2].m[1][0];
+    S->e[17] = t71;
+    const se23_real_t s02_10 = S->e[18];
     const se23_real_t t72 = p1_6 + s02_10 + p1_1 * pos2 - p1_2 * pos1 + p1_3 * dt;
-    S->blk[0][2].m[1][0] = t72;
-    const se23_real_t s02_11 = S->blk[0][2].m[1][1];
+    S->e[18] = t72;
+    const se23_real_t s02_11 = S->e[19];
     const se23_real_t t73 = p1_7 + s02_11 - p0_1 * pos2 + p1_2 * pos0 + p1_4 * dt;
-    S->blk[0][2].m[1][1] = t73;
-    const se23_real_t s02_12 = S->blk[0][2].m[1][2];
+    S->e[19] = t73;
+    const se23_real_t s02_12 = S->e[20];
     const se23_real_t t74 = p1_8 + s02_12 + p0_1 * pos1 - p1_1 * pos0 + p1_5 * dt;
-    S->blk[0][2].m[1][2] = t74;
-    const se23_real_t s02_20 = S->blk[0][2].m[2][0];
+    S->e[20] = t74;
+    const se23_real_t s02_20 = S->e[21];
     const se23_real_t t75 = p2_6 + s02_20 + p1_2 * pos2 - p2_2 * pos1 + p2_3 * dt;
-    S->blk[0][2].m[2][0] = t75;
-    const se23_real_t s02_21 = S->blk[0][2].m[2][1];
+    S->e[21] = t75;
+    const se23_real_t s02_21 = S->e[22];
     const se23_real_t t76 = p2_7 + s02_21 - p0_2 * pos2 + p2_2 * pos0 + p2_4 * dt;
-    S->blk[0][2].m[2][1] = t76;
-    const se23_real_t s02_22 = S->blk[0][2].m[2][2];
+    S->e[22] = t76;
+    const se23_real_t s02_22 = S->e[23];
     const se23_real_t t77 = p2_8 + s02_22 + p0_2 * pos1 - p1_2 * pos0 + p2_5 * dt;
-    S->blk[0][2].m[2][2] = t77;
-    const se23_real_t s01_00 = S->blk[0][1].m[0][0];
+    S->e[23] = t77;
+    const se23_real_t s01_00 = S->e[6];
     const se23_real_t t78 = p0_3 + s01_00 + p0_1 * vel2 - p0_2 * vel1;
-    S->blk[0][1].m[0][0] = t78;
-    const se23_real_t s01_01 = S->blk[0][1].m[0][1];
+    S->e[6] = t78;
+    const se23_real_t s01_01 = S->e[7];
     const se23_real_t t79 = p0_4 + s01_01 - p0_0 * vel2 + p0_2 * vel0;
-    S->blk[0][1].m[0][1] = t79;
-    const se23_real_t s01_02 = S->blk[0][1].m[0][2];
+    S->e[7] = t79;
+    const se23_real_t s01_02 = S->e[8];
     const se23_real_t t80 = p0_5 + s01_02 + p0_0 * vel1 - p0_1 * vel0;
-    S->blk[0][1].m[0][2] = t80;
-    const se23_real_t s01_10 = S->blk[0][1].m[1][0];
+    S->e[8] = t80;
+    const se23_real_t s01_10 = S->e[9];
     const se23_real_t t81 = p1_3 + s01_10 + p1_1 * vel2 - p1_2 * vel1;
-    S->blk[0][1].m[1][0] = t81;
-    const se23_real_t s01_11 = S->blk[0][1].m[1][1];
+    S->e[9] = t81;
+    const se23_real_t s01_11 = S->e[10];
     const se23_real_t t82 = p1_4 + s01_11 - p0_1 * vel2 + p1_2 * vel0;
-    S->blk[0][1].m[1][1] = t82;
-    const se23_real_t s01_12 = S->blk[0][1].m[1][2];
+    S->e[10] = t82;
+    const se23_real_t s01_12 = S->e[11];
     const se23_real_t t83 = p1_5 + s01_12 + p0_1 * vel1 - p1_1 * vel0;
-    S->blk[0][1].m[1][2] = t83;
-    const se23_real_t s01_20 = S->blk[0][1].m[2][0];
+    S->e[11] = t83;
+    const se23_real_t s01_20 = S->e[12];
     const se23_real_t t84 = p2_3 + s01_20 + p1_2 * vel2 - p2_2 * vel1;
-    S->blk[0][1].m[2][0] = t84;
-    const se23_real_t s01_21 = S->blk[0][1].m[2][1];
+    S->e[12] = t84;
+    const se23_real_t s01_21 = S->e[13];
     const se23_real_t t85 = p2_4 + s01_21 - p0_2 * vel2 + p2_2 * vel0;
-    S->blk[0][1].m[2][1] = t85;
-    const se23_real_t s01_22 = S->blk[0][1].m[2][2];
+    S->e[13] = t85;
+    const se23_real_t s01_22 = S->e[14];
     const se23_real_t t86 = p2_5 + s01_22 + p0_2 * vel1 - p1_2 * vel0;
-    S->blk[0][1].m[2][2] = t86;
-    const se23_real_t s00_00 = S->blk[0][0].m[0][0];
+    S->e[14] = t86;
+    const se23_real_t s00_00 = S->e[0];
     const se23_real_t t87 = p0_0 + s00_00;
-    S->blk[0][0].m[0][0] = t87;
-    const se23_real_t s00_01 = S->blk[0][0].m[0][1];
+    S->e[0] = t87;
+    const se23_real_t s00_01 = S->e[1];
     const se23_real_t t88 = p0_1 + s00_01;
-    S->blk[0][0].m[0][1] = t88;
-    const se23_real_t s00_02 = S->blk[0][0].m[0][2];
+    S->e[1] = t88;
+    const se23_real_t s00_02 = S->e[2];
     const se23_real_t t89 = p0_2 + s00_02;
-    S->blk[0][0].m[0][2] = t89;
-    const se23_real_t s00_11 = S->blk[0][0].m[1][1];
+    S->e[2] = t89;
+    const se23_real_t s00_11 = S->e[3];
     const se23_real_t t90 = p1_1 + s00_11;
-    S->blk[0][0].m[1][1] = t90;
-    const se23_real_t s00_12 = S->blk[0][0].m[1][2];
+    S->e[3] = t90;
+    const se23_real_t s00_12 = S->e[4];
     const se23_real_t t91 = p1_2 + s00_12;
-    S->blk[0][0].m[1][2] = t91;
-    const se23_real_t s00_22 = S->blk[0][0].m[2][2];
+    S->e[4] = t91;
+    const se23_real_t s00_22 = S->e[5];
     const se23_real_t t92 = p2_2 + s00_22;
-    S->blk[0][0].m[2][2] = t92;
+    S->e[5] = t92;
 }
 
 /* the last stage: the pose blocks R^T S R: 297 multiplies and 198 adds
@@ -1347,16 +1347,16 @@ void se23_cov_rotate_pose(const se23_pose_t *U, const se23_cov_pose_t *S, se23_r
                           int stride)
 {
     const se23_real_t r00 = U->R.m[0][0];
-    const se23_real_t s00_00 = S->blk[0][0].m[0][0];
+    const se23_real_t s00_00 = S->e[0];
     const se23_real_t r10 = U->R.m[1][0];
-    const se23_real_t s00_01 = S->blk[0][0].m[0][1];
+    const se23_real_t s00_01 = S->e[1];
     const se23_real_t r20 = U->R.m[2][0];
-    const se23_real_t s00_02 = S->blk[0][0].m[0][2];
+    const se23_real_t s00_02 = S->e[2];
     const se23_real_t t1 = r00 * s00_00 + r10 * s00_01 + r20 * s00_02;
-    const se23_real_t s00_11 = S->blk[0][0].m[1][1];
-    const se23_real_t s00_12 = S->blk[0][0].m[1][2];
+    const se23_real_t s00_11 = S->e[3];
+    const se23_real_t s00_12 = S->e[4];
     const se23_real_t t2 = r00 * s00_01 + r10 * s00_11 + r20 * s00_12;
-    const se23_real_t s00_22 = S->blk[0][0].m[2][2];
+    const se23_real_t s00_22 = S->e[5];
     const se23_real_t t3 = r00 * s00_02 + r10 * s00_12 + r20 * s00_22;
     const se23_real_t t4 = t1 * r00 + t2 * r10 + t3 * r20;
     const se23_real_t r01 = U->R.m[0][1];
@@ -1385,17 +1385,17 @@ void se23_cov_rotate_pose(const se23_pose_t *U, const se23_cov_pose_t *S, se23_r
     const se23_real_t t14 = r02 * s00_02 + r12 * s00_12 + r22 * s00_22;
     const se23_real_t t15 = t12 * r02 + t13 * r12 + t14 * r22;
     out[(stride * 2) + 2] = t15;
-    const se23_real_t s01_00 = S->blk[0][1].m[0][0];
-    const se23_real_t s01_10 = S->blk[0][1].m[1][0];
-    const se23_real_t s01_20 = S->blk[0][1].m[2][0];
+    const se23_real_t s01_00 = S->e[6];
+    const se23_real_t s01_10 = S->e[9];
+    const se23_real_t s01_20 = S->e[12];
     const se23_real_t t16 = r00 * s01_00 + r10 * s01_10 + r20 * s01_20;
-    const se23_real_t s01_01 = S->blk[0][1].m[0][1];
-    const se23_real_t s01_11 = S->blk[0][1].m[1][1];
-    const se23_real_t s01_21 = S->blk[0][1].m[2][1];
+    const se23_real_t s01_01 = S->e[7];
+    const se23_real_t s01_11 = S->e[10];
+    const se23_real_t s01_21 = S->e[13];
     const se23_real_t t17 = r00 * s01_01 + r10 * s01_11 + r20 * s01_21;
-    const se23_real_t s01_02 = S->blk[0][1].m[0][2];
-    const se23_real_t s01_12 = S->blk[0][1].m[1][2];
-    const se23_real_t s01_22 = S->blk[0][1].m[2][2];
+    const se23_real_t s01_02 = S->e[8];
+    const se23_real_t s01_12 = S->e[11];
+    const se23_real_t s01_22 = S->e[14];
     const se23_real_t t18 = r00 * s01_02 + r10 * s01_12 + r20 * s01_22;
     const se23_real_t t19 = t16 * r00 + t17 * r10 + t18 * r20;
     const se23_real_t t20 = t16 * r01 + t17 * r11 + t18 * r21;
@@ -1430,17 +1430,17 @@ void se23_cov_rotate_pose(const se23_pose_t *U, const se23_cov_pose_t *S, se23_r
     out[(stride * 4) + 2] = t32;
     out[(stride * 2) + 5] = t33;
     out[(stride * 5) + 2] = t33;
-    const se23_real_t s02_00 = S->blk[0][2].m[0][0];
-    const se23_real_t s02_10 = S->blk[0][2].m[1][0];
-    const se23_real_t s02_20 = S->blk[0][2].m[2][0];
+    const se23_real_t s02_00 = S->e[15];
+    const se23_real_t s02_10 = S->e[18];
+    const se23_real_t s02_20 = S->e[21];
     const se23_real_t t34 = r00 * s02_00 + r10 * s02_10 + r20 * s02_20;
-    const se23_real_t s02_01 = S->blk[0][2].m[0][1];
-    const se23_real_t s02_11 = S->blk[0][2].m[1][1];
-    const se23_real_t s02_21 = S->blk[0][2].m[2][1];
+    const se23_real_t s02_01 = S->e[16];
+    const se23_real_t s02_11 = S->e[19];
+    const se23_real_t s02_21 = S->e[22];
     const se23_real_t t35 = r00 * s02_01 + r10 * s02_11 + r20 * s02_21;
-    const se23_real_t s02_02 = S->blk[0][2].m[0][2];
-    const se23_real_t s02_12 = S->blk[0][2].m[1][2];
-    const se23_real_t s02_22 = S->blk[0][2].m[2][2];
+    const se23_real_t s02_02 = S->e[17];
+    const se23_real_t s02_12 = S->e[20];
+    const se23_real_t s02_22 = S->e[23];
     const se23_real_t t36 = r00 * s02_02 + r10 * s02_12 + r20 * s02_22;
     const se23_real_t t37 = t34 * r00 + t35 * r10 + t36 * r20;
     const se23_real_t t38 = t34 * r01 + t35 * r11 + t36 * r21;
@@ -1475,14 +1475,14 @@ void se23_cov_rotate_pose(const se23_pose_t *U, const se23_cov_pose_t *S, se23_r
     out[(stride * 7) + 2] = t50;
     out[(stride * 2) + 8] = t51;
     out[(stride * 8) + 2] = t51;
-    const se23_real_t s11_00 = S->blk[1][1].m[0][0];
-    const se23_real_t s11_01 = S->blk[1][1].m[0][1];
-    const se23_real_t s11_02 = S->blk[1][1].m[0][2];
+    const se23_real_t s11_00 = S->e[24];
+    const se23_real_t s11_01 = S->e[25];
+    const se23_real_t s11_02 = S->e[26];
     const se23_real_t t52 = r00 * s11_00 + r10 * s11_01 + r20 * s11_02;
-    const se23_real_t s11_11 = S->blk[1][1].m[1][1];
-    const se23_real_t s11_12 = S->blk[1][1].m[1][2];
+    const se23_real_t s11_11 = S->e[27];
+    const se23_real_t s11_12 = S->e[28];
     const se23_real_t t53 = r00 * s11_01 + r10 * s11_11 + r20 * s11_12;
-    const se23_real_t s11_22 = S->blk[1][1].m[2][2];
+    const se23_real_t s11_22 = S->e[29];
     const se23_real_t t54 = r00 * s11_02 + r10 * s11_12 + r20 * s11_22;
     const se23_real_t t55 = t52 * r00 + t53 * r10 + t54 * r20;
     const se23_real_t t56 = t52 * r01 + t53 * r11 + t54 * r21;
@@ -1505,17 +1505,17 @@ void se23_cov_rotate_pose(const se23_pose_t *U, const se23_cov_pose_t *S, se23_r
     const se23_real_t t65 = r02 * s11_02 + r12 * s11_12 + r22 * s11_22;
     const se23_real_t t66 = t63 * r02 + t64 * r12 + t65 * r22;
     out[(stride * 5) + 5] = t66;
-    const se23_real_t s12_00 = S->blk[1][2].m[0][0];
-    const se23_real_t s12_10 = S->blk[1][2].m[1][0];
-    const se23_real_t s12_20 = S->blk[1][2].m[2][0];
+    const se23_real_t s12_00 = S->e[30];
+    const se23_real_t s12_10 = S->e[33];
+    const se23_real_t s12_20 = S->e[36];
     const se23_real_t t67 = r00 * s12_00 + r10 * s12_10 + r20 * s12_20;
-    const se23_real_t s12_01 = S->blk[1][2].m[0][1];
-    const se23_real_t s12_11 = S->blk[1][2].m[1][1];
-    const se23_real_t s12_21 = S->blk[1][2].m[2][1];
+    const se23_real_t s12_01 = S->e[31];
+    const se23_real_t s12_11 = S->e[34];
+    const se23_real_t s12_21 = S->e[37];
     const se23_real_t t68 = r00 * s12_01 + r10 * s12_11 + r20 * s12_21;
-    const se23_real_t s12_02 = S->blk[1][2].m[0][2];
-    const se23_real_t s12_12 = S->blk[1][2].m[1][2];
-    const se23_real_t s12_22 = S->blk[1][2].m[2][2];
+    const se23_real_t s12_02 = S->e[32];
+    const se23_real_t s12_12 = S->e[35];
+    const se23_real_t s12_22 = S->e[38];
     const se23_real_t t69 = r00 * s12_02 + r10 * s12_12 + r20 * s12_22;
     const se23_real_t t70 = t67 * r00 + t68 * r10 + t69 * r20;
     const se23_real_t t71 = t67 * r01 + t68 * r11 + t69 * r21;
@@ -1550,14 +1550,14 @@ void se23_cov_rotate_pose(const se23_pose_t *U, const se23_cov_pose_t *S, se23_r
     out[(stride * 7) + 5] = t83;
     out[(stride * 5) + 8] = t84;
     out[(stride * 8) + 5] = t84;
-    const se23_real_t s22_00 = S->blk[2][2].m[0][0];
-    const se23_real_t s22_01 = S->blk[2][2].m[0][1];
-    const se23_real_t s22_02 = S->blk[2][2].m[0][2];
+    const se23_real_t s22_00 = S->e[39];
+    const se23_real_t s22_01 = S->e[40];
+    const se23_real_t s22_02 = S->e[41];
     const se23_real_t t85 = r00 * s22_00 + r10 * s22_01 + r20 * s22_02;
-    const se23_real_t s22_11 = S->blk[2][2].m[1][1];
-    const se23_real_t s22_12 = S->blk[2][2].m[1][2];
+    const se23_real_t s22_11 = S->e[42];
+    const se23_real_t s22_12 = S->e[43];
     const se23_real_t t86 = r00 * s22_01 + r10 * s22_11 + r20 * s22_12;
-    const se23_real_t s22_22 = S->blk[2][2].m[2][2];
+    const se23_real_t s22_22 = S->e[44];
     const se23_real_t t87 = r00 * s22_02 + r10 * s22_12 + r20 * s22_22;
     const se23_real_t t88 = t85 * r00 + t86 * r10 + t87 * r20;
     const se23_real_t t89 = t85 * r01 + t86 * r11 + t87 * r21;

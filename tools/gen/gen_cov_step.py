@@ -164,13 +164,13 @@ class Gen:
         return self.lin([(diag(s), B)])
 
     # --- stores -------------------------------------------------------------
-    def put_block(self, lhs, blk, upper=False):
-        """The scratch block lhs (a se23_mat3_t lvalue, never aliasing P) =
-        blk; with upper, its upper triangle only."""
+    def put_block(self, i, j, blk):
+        """Scratch block (i, j) of S (never aliasing P) = blk; a diagonal
+        block's upper triangle only."""
         for a in range(3):
-            for b in range(a if upper else 0, 3):
+            for b in range(a if i == j else 0, 3):
                 e = self.value(blk[a][b])
-                dst = "%s.m[%d][%d]" % (lhs, a, b)
+                dst = scratch_entry(i, j, a, b)
                 if e is not None and e[0] > 0 and self.inputs.get(e[1]) == dst:
                     continue  # the entry is unchanged
                 rhs = "SE23_R(0)" if e is None else ("-" if e[0] < 0 else "") + e[1]
@@ -306,8 +306,7 @@ def kernel(g, mode):
                 if Bt[j][k] is not None:
                     pairs.append((Y[i], tr(Bt[j][k])))
                 prev = scratch_block(i, j) if k == 1 else None
-                g.put_block("S->blk[%d][%d]" % (i, j), g.lin(pairs, sym=(i == j), extra=prev),
-                            upper=(i == j))
+                g.put_block(i, j, g.lin(pairs, sym=(i == j), extra=prev))
         if k == 0:
             g.finish()
             return
@@ -336,15 +335,14 @@ def kernel(g, mode):
             for j in range(i, 3):
                 pairs = [(Bt[i][k], qBtT[j][k]) for k in range(2)
                          if Bt[i][k] is not None and Bt[j][k] is not None]
-                g.put_block("S->blk[%d][%d]" % (i, j), g.lin(pairs, sym=(i == j)),
-                            upper=(i == j))
+                g.put_block(i, j, g.lin(pairs, sym=(i == j)))
         g.finish()
         return
 
     def finish(i, j, A_pairs, A_base):
         """Scratch block (i, j) += A_ij (upper triangle if i = j)."""
         S = g.lin(A_pairs, base=A_base, sym=(i == j), extra=scratch_block(i, j))
-        g.put_block("S->blk[%d][%d]" % (i, j), S, upper=(i == j))
+        g.put_block(i, j, S)
 
     # The in-place order: (2,2), (1,2), (1,1), (0,2), (0,1), (0,0).
     W[1][0], W[2][0] = shear(X(0, 0), X(1, 0), X(2, 0))[1:]
@@ -358,6 +356,20 @@ def kernel(g, mode):
     finish(PHI, NU, [(W[0][0], Vp)], W[0][1])
     finish(PHI, PHI, [], W[0][0])
     g.finish()
+
+
+# Offsets of the scratch's blocks in se23_cov_pose_t.e (cov_step.h): the
+# blocks i <= j in the order (0,0), (0,1), (0,2), (1,1), (1,2), (2,2), a
+# diagonal block as its upper triangle by rows (6), the others by rows (9).
+SCRATCH_OFFSET = {(0, 0): 0, (0, 1): 6, (0, 2): 15, (1, 1): 24, (1, 2): 30, (2, 2): 39}
+DIAG_UPPER = {(0, 0): 0, (0, 1): 1, (0, 2): 2, (1, 1): 3, (1, 2): 4, (2, 2): 5}
+
+
+def scratch_entry(i, j, a, b):
+    """The C lvalue of entry (a, b) of scratch block (i, j), i <= j (a <= b
+    if i = j)."""
+    k = DIAG_UPPER[(a, b)] if i == j else 3 * a + b
+    return "S->e[%d]" % (SCRATCH_OFFSET[(i, j)] + k)
 
 
 def scratch_block(i, j):
@@ -424,10 +436,10 @@ def inputs():
     for name in ("qg", "qa", "wg", "wa"):
         ins[name] = "q->" + name
     for i in range(3):
-        for j in range(3):
+        for j in range(i, 3):
             for a in range(3):
-                for b in range(3):
-                    ins["s%d%d_%d%d" % (i, j, a, b)] = "S->blk[%d][%d].m[%d][%d]" % (i, j, a, b)
+                for b in range(a if i == j else 0, 3):
+                    ins["s%d%d_%d%d" % (i, j, a, b)] = scratch_entry(i, j, a, b)
     return ins
 
 
