@@ -20,11 +20,11 @@
  *
  * se23_cov_step runs the stages of cov_step.h: E into a scratch S of the
  * pose blocks (for 15 states a bias column at a time, storing the cross
- * blocks D Z and the bias block), then S += G X G^T, then out's pose blocks
- * R^T S R. In place: a stage stores an entry of out only after its read of
- * the entry of P it replaces (the generator orders them so), the cross and
- * bias blocks are read by no later stage, and the pose blocks are stored
- * last. Operation counts: cov_step_kernel.c. */
+ * blocks D Z, then the bias block), then S += G X G^T, then out's pose
+ * blocks R^T S R. In place: a stage stores an entry of out only after its
+ * read of the entry of P it replaces (the generator orders them so), the
+ * cross and bias blocks are read by no later stage, and the pose blocks
+ * are stored last. Operation counts: cov_step_kernel.c. */
 #include "cov_step.h"
 
 #include "cov.h"
@@ -201,6 +201,7 @@ void se23_cov_step(const se23_pose_t *U, se23_real_t dt,
     if (n == SE23_GAUSS_N_BIAS) {
         se23_cov_step15_gyro(U, dt, Bt, q, P, out, stride, &S);
         se23_cov_step15_accel(U, dt, Bt, q, P, out, stride, &S);
+        se23_cov_step15_bias(q, P, out, stride);
     } else {
         se23_cov_step9_noise(Bt, q, &S);
     }

@@ -226,831 +226,926 @@ void se23_cov_step15_gyro(const se23_pose_t *U, se23_real_t dt, const se23_input
                           int stride, se23_cov_pose_t *S)
 {
     const se23_real_t p0_9 = P[9];
-    const se23_real_t p9_9 = P[(stride * 9) + 9];
-    const se23_real_t p9_10 = P[(stride * 9) + 10];
-    const se23_real_t p9_11 = P[(stride * 9) + 11];
-    const se23_real_t b00_00 = Bt->blk[0][0].m[0][0];
-    const se23_real_t b00_01 = Bt->blk[0][0].m[0][1];
-    const se23_real_t b00_02 = Bt->blk[0][0].m[0][2];
-    const se23_real_t t1 = p0_9 + b00_00 * p9_9 + b00_01 * p9_10 + b00_02 * p9_11;
+    const se23_real_t t1 = p0_9 + Bt->blk[0][0].m[0][0] * P[(stride * 9) + 9]
+                           + Bt->blk[0][0].m[0][1] * P[(stride * 9) + 10]
+                           + Bt->blk[0][0].m[0][2] * P[(stride * 9) + 11];
     const se23_real_t p1_9 = P[stride + 9];
-    const se23_real_t b00_10 = Bt->blk[0][0].m[1][0];
-    const se23_real_t b00_11 = Bt->blk[0][0].m[1][1];
-    const se23_real_t b00_12 = Bt->blk[0][0].m[1][2];
-    const se23_real_t t2 = p1_9 + b00_10 * p9_9 + b00_11 * p9_10 + b00_12 * p9_11;
+    const se23_real_t t2 = p1_9 + Bt->blk[0][0].m[1][0] * P[(stride * 9) + 9]
+                           + Bt->blk[0][0].m[1][1] * P[(stride * 9) + 10]
+                           + Bt->blk[0][0].m[1][2] * P[(stride * 9) + 11];
     const se23_real_t p2_9 = P[(stride * 2) + 9];
-    const se23_real_t b00_20 = Bt->blk[0][0].m[2][0];
-    const se23_real_t b00_21 = Bt->blk[0][0].m[2][1];
-    const se23_real_t b00_22 = Bt->blk[0][0].m[2][2];
-    const se23_real_t t3 = p2_9 + b00_20 * p9_9 + b00_21 * p9_10 + b00_22 * p9_11;
-    const se23_real_t r00 = U->R.m[0][0];
-    const se23_real_t r10 = U->R.m[1][0];
-    const se23_real_t r20 = U->R.m[2][0];
-    const se23_real_t t4 = r00 * t1 + r10 * t2 + r20 * t3;
+    const se23_real_t t3 = p2_9 + Bt->blk[0][0].m[2][0] * P[(stride * 9) + 9]
+                           + Bt->blk[0][0].m[2][1] * P[(stride * 9) + 10]
+                           + Bt->blk[0][0].m[2][2] * P[(stride * 9) + 11];
+    const se23_real_t t4 = U->R.m[0][0] * t1 + U->R.m[1][0] * t2 + U->R.m[2][0] * t3;
     const se23_real_t p0_10 = P[10];
-    const se23_real_t p10_10 = P[(stride * 10) + 10];
-    const se23_real_t p10_11 = P[(stride * 10) + 11];
-    const se23_real_t t5 = p0_10 + b00_00 * p9_10 + b00_01 * p10_10 + b00_02 * p10_11;
+    const se23_real_t t5 = p0_10 + Bt->blk[0][0].m[0][0] * P[(stride * 9) + 10]
+                           + Bt->blk[0][0].m[0][1] * P[(stride * 10) + 10]
+                           + Bt->blk[0][0].m[0][2] * P[(stride * 10) + 11];
     out[9] = t4;
     out[(stride * 9)] = t4;
     const se23_real_t p1_10 = P[stride + 10];
-    const se23_real_t t6 = p1_10 + b00_10 * p9_10 + b00_11 * p10_10 + b00_12 * p10_11;
+    const se23_real_t t6 = p1_10 + Bt->blk[0][0].m[1][0] * P[(stride * 9) + 10]
+                           + Bt->blk[0][0].m[1][1] * P[(stride * 10) + 10]
+                           + Bt->blk[0][0].m[1][2] * P[(stride * 10) + 11];
     const se23_real_t p2_10 = P[(stride * 2) + 10];
-    const se23_real_t t7 = p2_10 + b00_20 * p9_10 + b00_21 * p10_10 + b00_22 * p10_11;
-    const se23_real_t t8 = r00 * t5 + r10 * t6 + r20 * t7;
+    const se23_real_t t7 = p2_10 + Bt->blk[0][0].m[2][0] * P[(stride * 9) + 10]
+                           + Bt->blk[0][0].m[2][1] * P[(stride * 10) + 10]
+                           + Bt->blk[0][0].m[2][2] * P[(stride * 10) + 11];
+    const se23_real_t t8 = U->R.m[0][0] * t5 + U->R.m[1][0] * t6 + U->R.m[2][0] * t7;
     const se23_real_t p0_11 = P[11];
-    const se23_real_t p11_11 = P[(stride * 11) + 11];
-    const se23_real_t t9 = p0_11 + b00_00 * p9_11 + b00_01 * p10_11 + b00_02 * p11_11;
+    const se23_real_t t9 = p0_11 + Bt->blk[0][0].m[0][0] * P[(stride * 9) + 11]
+                           + Bt->blk[0][0].m[0][1] * P[(stride * 10) + 11]
+                           + Bt->blk[0][0].m[0][2] * P[(stride * 11) + 11];
     out[10] = t8;
     out[(stride * 10)] = t8;
     const se23_real_t p1_11 = P[stride + 11];
-    const se23_real_t t10 = p1_11 + b00_10 * p9_11 + b00_11 * p10_11 + b00_12 * p11_11;
+    const se23_real_t t10 = p1_11 + Bt->blk[0][0].m[1][0] * P[(stride * 9) + 11]
+                            + Bt->blk[0][0].m[1][1] * P[(stride * 10) + 11]
+                            + Bt->blk[0][0].m[1][2] * P[(stride * 11) + 11];
     const se23_real_t p2_11 = P[(stride * 2) + 11];
-    const se23_real_t t11 = p2_11 + b00_20 * p9_11 + b00_21 * p10_11 + b00_22 * p11_11;
-    const se23_real_t t12 = r00 * t9 + r10 * t10 + r20 * t11;
-    const se23_real_t r01 = U->R.m[0][1];
-    const se23_real_t r11 = U->R.m[1][1];
-    const se23_real_t r21 = U->R.m[2][1];
-    const se23_real_t t13 = r01 * t1 + r11 * t2 + r21 * t3;
+    const se23_real_t t11 = p2_11 + Bt->blk[0][0].m[2][0] * P[(stride * 9) + 11]
+                            + Bt->blk[0][0].m[2][1] * P[(stride * 10) + 11]
+                            + Bt->blk[0][0].m[2][2] * P[(stride * 11) + 11];
+    const se23_real_t t12 = U->R.m[0][0] * t9 + U->R.m[1][0] * t10 + U->R.m[2][0] * t11;
+    const se23_real_t t13 = U->R.m[0][1] * t1 + U->R.m[1][1] * t2 + U->R.m[2][1] * t3;
     out[11] = t12;
     out[(stride * 11)] = t12;
-    const se23_real_t t14 = r01 * t5 + r11 * t6 + r21 * t7;
+    const se23_real_t t14 = U->R.m[0][1] * t5 + U->R.m[1][1] * t6 + U->R.m[2][1] * t7;
     out[stride + 9] = t13;
     out[(stride * 9) + 1] = t13;
-    const se23_real_t t15 = r01 * t9 + r11 * t10 + r21 * t11;
+    const se23_real_t t15 = U->R.m[0][1] * t9 + U->R.m[1][1] * t10 + U->R.m[2][1] * t11;
     out[stride + 10] = t14;
     out[(stride * 10) + 1] = t14;
-    const se23_real_t r02 = U->R.m[0][2];
-    const se23_real_t r12 = U->R.m[1][2];
-    const se23_real_t r22 = U->R.m[2][2];
-    const se23_real_t t16 = r02 * t1 + r12 * t2 + r22 * t3;
+    const se23_real_t t16 = U->R.m[0][2] * t1 + U->R.m[1][2] * t2 + U->R.m[2][2] * t3;
     out[stride + 11] = t15;
     out[(stride * 11) + 1] = t15;
-    const se23_real_t t17 = r02 * t5 + r12 * t6 + r22 * t7;
+    const se23_real_t t17 = U->R.m[0][2] * t5 + U->R.m[1][2] * t6 + U->R.m[2][2] * t7;
     out[(stride * 2) + 9] = t16;
     out[(stride * 9) + 2] = t16;
-    const se23_real_t t18 = r02 * t9 + r12 * t10 + r22 * t11;
+    const se23_real_t t18 = U->R.m[0][2] * t9 + U->R.m[1][2] * t10 + U->R.m[2][2] * t11;
     out[(stride * 2) + 10] = t17;
     out[(stride * 10) + 2] = t17;
     out[(stride * 2) + 11] = t18;
     out[(stride * 11) + 2] = t18;
+    const se23_real_t t19 = t1 + q->qg * Bt->blk[0][0].m[0][0];
+    const se23_real_t t20 = t5 + q->qg * Bt->blk[0][0].m[0][1];
+    const se23_real_t t21 = t9 + q->qg * Bt->blk[0][0].m[0][2];
+    const se23_real_t t22 = Bt->blk[0][0].m[0][0] * t19 + Bt->blk[0][0].m[0][1] * t20
+                            + Bt->blk[0][0].m[0][2] * t21 + p0_9 * Bt->blk[0][0].m[0][0]
+                            + p0_10 * Bt->blk[0][0].m[0][1] + p0_11 * Bt->blk[0][0].m[0][2];
+    S->e[0] = t22;
+    const se23_real_t t23 = t2 + q->qg * Bt->blk[0][0].m[1][0];
+    const se23_real_t t24 = t6 + q->qg * Bt->blk[0][0].m[1][1];
+    const se23_real_t t25 = t10 + q->qg * Bt->blk[0][0].m[1][2];
+    const se23_real_t t26 = Bt->blk[0][0].m[0][0] * t23 + Bt->blk[0][0].m[0][1] * t24
+                            + Bt->blk[0][0].m[0][2] * t25 + p0_9 * Bt->blk[0][0].m[1][0]
+                            + p0_10 * Bt->blk[0][0].m[1][1] + p0_11 * Bt->blk[0][0].m[1][2];
+    S->e[1] = t26;
+    const se23_real_t t27 = t3 + q->qg * Bt->blk[0][0].m[2][0];
+    const se23_real_t t28 = t7 + q->qg * Bt->blk[0][0].m[2][1];
+    const se23_real_t t29 = t11 + q->qg * Bt->blk[0][0].m[2][2];
+    const se23_real_t t30 = Bt->blk[0][0].m[0][0] * t27 + Bt->blk[0][0].m[0][1] * t28
+                            + Bt->blk[0][0].m[0][2] * t29 + p0_9 * Bt->blk[0][0].m[2][0]
+                            + p0_10 * Bt->blk[0][0].m[2][1] + p0_11 * Bt->blk[0][0].m[2][2];
+    S->e[2] = t30;
+    const se23_real_t t31 = Bt->blk[0][0].m[1][0] * t23 + Bt->blk[0][0].m[1][1] * t24
+                            + Bt->blk[0][0].m[1][2] * t25 + p1_9 * Bt->blk[0][0].m[1][0]
+                            + p1_10 * Bt->blk[0][0].m[1][1] + p1_11 * Bt->blk[0][0].m[1][2];
+    S->e[3] = t31;
+    const se23_real_t t32 = Bt->blk[0][0].m[1][0] * t27 + Bt->blk[0][0].m[1][1] * t28
+                            + Bt->blk[0][0].m[1][2] * t29 + p1_9 * Bt->blk[0][0].m[2][0]
+                            + p1_10 * Bt->blk[0][0].m[2][1] + p1_11 * Bt->blk[0][0].m[2][2];
+    S->e[4] = t32;
+    const se23_real_t t33 = Bt->blk[0][0].m[2][0] * t27 + Bt->blk[0][0].m[2][1] * t28
+                            + Bt->blk[0][0].m[2][2] * t29 + p2_9 * Bt->blk[0][0].m[2][0]
+                            + p2_10 * Bt->blk[0][0].m[2][1] + p2_11 * Bt->blk[0][0].m[2][2];
+    S->e[5] = t33;
     const se23_real_t p3_9 = P[(stride * 3) + 9];
-    const se23_real_t vel2 = U->v.v[2];
-    const se23_real_t vel1 = U->v.v[1];
-    const se23_real_t t19 = p3_9 + vel2 * p1_9 - vel1 * p2_9;
-    const se23_real_t p9_12 = P[(stride * 9) + 12];
-    const se23_real_t p9_13 = P[(stride * 9) + 13];
-    const se23_real_t p9_14 = P[(stride * 9) + 14];
-    const se23_real_t b10_00 = Bt->blk[1][0].m[0][0];
-    const se23_real_t b10_01 = Bt->blk[1][0].m[0][1];
-    const se23_real_t b10_02 = Bt->blk[1][0].m[0][2];
-    const se23_real_t b11_00 = Bt->blk[1][1].m[0][0];
-    const se23_real_t b11_01 = Bt->blk[1][1].m[0][1];
-    const se23_real_t b11_02 = Bt->blk[1][1].m[0][2];
-    const se23_real_t t20 = t19 + b10_00 * p9_9 + b10_01 * p9_10 + b10_02 * p9_11
-                            + b11_00 * p9_12 + b11_01 * p9_13 + b11_02 * p9_14;
+    const se23_real_t t34 = p3_9 + U->v.v[2] * p1_9 - U->v.v[1] * p2_9;
+    const se23_real_t t35 = t34 + Bt->blk[1][0].m[0][0] * P[(stride * 9) + 9]
+                            + Bt->blk[1][0].m[0][1] * P[(stride * 9) + 10]
+                            + Bt->blk[1][0].m[0][2] * P[(stride * 9) + 11]
+                            + Bt->blk[1][1].m[0][0] * P[(stride * 9) + 12]
+                            + Bt->blk[1][1].m[0][1] * P[(stride * 9) + 13]
+                            + Bt->blk[1][1].m[0][2] * P[(stride * 9) + 14];
     const se23_real_t p4_9 = P[(stride * 4) + 9];
-    const se23_real_t vel0 = U->v.v[0];
-    const se23_real_t t21 = p4_9 - vel2 * p0_9 + vel0 * p2_9;
-    const se23_real_t b10_10 = Bt->blk[1][0].m[1][0];
-    const se23_real_t b10_11 = Bt->blk[1][0].m[1][1];
-    const se23_real_t b10_12 = Bt->blk[1][0].m[1][2];
-    const se23_real_t b11_10 = Bt->blk[1][1].m[1][0];
-    const se23_real_t b11_11 = Bt->blk[1][1].m[1][1];
-    const se23_real_t b11_12 = Bt->blk[1][1].m[1][2];
-    const se23_real_t t22 = t21 + b10_10 * p9_9 + b10_11 * p9_10 + b10_12 * p9_11
-                            + b11_10 * p9_12 + b11_11 * p9_13 + b11_12 * p9_14;
+    const se23_real_t t36 = p4_9 - U->v.v[2] * p0_9 + U->v.v[0] * p2_9;
+    const se23_real_t t37 = t36 + Bt->blk[1][0].m[1][0] * P[(stride * 9) + 9]
+                            + Bt->blk[1][0].m[1][1] * P[(stride * 9) + 10]
+                            + Bt->blk[1][0].m[1][2] * P[(stride * 9) + 11]
+                            + Bt->blk[1][1].m[1][0] * P[(stride * 9) + 12]
+                            + Bt->blk[1][1].m[1][1] * P[(stride * 9) + 13]
+                            + Bt->blk[1][1].m[1][2] * P[(stride * 9) + 14];
     const se23_real_t p5_9 = P[(stride * 5) + 9];
-    const se23_real_t t23 = p5_9 + vel1 * p0_9 - vel0 * p1_9;
-    const se23_real_t b10_20 = Bt->blk[1][0].m[2][0];
-    const se23_real_t b10_21 = Bt->blk[1][0].m[2][1];
-    const se23_real_t b10_22 = Bt->blk[1][0].m[2][2];
-    const se23_real_t b11_20 = Bt->blk[1][1].m[2][0];
-    const se23_real_t b11_21 = Bt->blk[1][1].m[2][1];
-    const se23_real_t b11_22 = Bt->blk[1][1].m[2][2];
-    const se23_real_t t24 = t23 + b10_20 * p9_9 + b10_21 * p9_10 + b10_22 * p9_11
-                            + b11_20 * p9_12 + b11_21 * p9_13 + b11_22 * p9_14;
-    const se23_real_t t25 = r00 * t20 + r10 * t22 + r20 * t24;
+    const se23_real_t t38 = p5_9 + U->v.v[1] * p0_9 - U->v.v[0] * p1_9;
+    const se23_real_t t39 = t38 + Bt->blk[1][0].m[2][0] * P[(stride * 9) + 9]
+                            + Bt->blk[1][0].m[2][1] * P[(stride * 9) + 10]
+                            + Bt->blk[1][0].m[2][2] * P[(stride * 9) + 11]
+                            + Bt->blk[1][1].m[2][0] * P[(stride * 9) + 12]
+                            + Bt->blk[1][1].m[2][1] * P[(stride * 9) + 13]
+                            + Bt->blk[1][1].m[2][2] * P[(stride * 9) + 14];
+    const se23_real_t t40 = U->R.m[0][0] * t35 + U->R.m[1][0] * t37 + U->R.m[2][0] * t39;
     const se23_real_t p3_10 = P[(stride * 3) + 10];
-    const se23_real_t t26 = p3_10 + vel2 * p1_10 - vel1 * p2_10;
-    out[(stride * 3) + 9] = t25;
-    out[(stride * 9) + 3] = t25;
-    const se23_real_t p10_12 = P[(stride * 10) + 12];
-    const se23_real_t p10_13 = P[(stride * 10) + 13];
-    const se23_real_t p10_14 = P[(stride * 10) + 14];
-    const se23_real_t t27 = t26 + b10_00 * p9_10 + b10_01 * p10_10 + b10_02 * p10_11
-                            + b11_00 * p10_12 + b11_01 * p10_13 + b11_02 * p10_14;
+    const se23_real_t t41 = p3_10 + U->v.v[2] * p1_10 - U->v.v[1] * p2_10;
+    out[(stride * 3) + 9] = t40;
+    out[(stride * 9) + 3] = t40;
+    const se23_real_t t42 = t41 + Bt->blk[1][0].m[0][0] * P[(stride * 9) + 10]
+                            + Bt->blk[1][0].m[0][1] * P[(stride * 10) + 10]
+                            + Bt->blk[1][0].m[0][2] * P[(stride * 10) + 11]
+                            + Bt->blk[1][1].m[0][0] * P[(stride * 10) + 12]
+                            + Bt->blk[1][1].m[0][1] * P[(stride * 10) + 13]
+                            + Bt->blk[1][1].m[0][2] * P[(stride * 10) + 14];
     const se23_real_t p4_10 = P[(stride * 4) + 10];
-    const se23_real_t t28 = p4_10 - vel2 * p0_10 + vel0 * p2_10;
-    const se23_real_t t29 = t28 + b10_10 * p9_10 + b10_11 * p10_10 + b10_12 * p10_11
-                            + b11_10 * p10_12 + b11_11 * p10_13 + b11_12 * p10_14;
+    const se23_real_t t43 = p4_10 - U->v.v[2] * p0_10 + U->v.v[0] * p2_10;
+    const se23_real_t t44 = t43 + Bt->blk[1][0].m[1][0] * P[(stride * 9) + 10]
+                            + Bt->blk[1][0].m[1][1] * P[(stride * 10) + 10]
+                            + Bt->blk[1][0].m[1][2] * P[(stride * 10) + 11]
+                            + Bt->blk[1][1].m[1][0] * P[(stride * 10) + 12]
+                            + Bt->blk[1][1].m[1][1] * P[(stride * 10) + 13]
+                            + Bt->blk[1][1].m[1][2] * P[(stride * 10) + 14];
     const se23_real_t p5_10 = P[(stride * 5) + 10];
-    const se23_real_t t30 = p5_10 + vel1 * p0_10 - vel0 * p1_10;
-    const se23_real_t t31 = t30 + b10_20 * p9_10 + b10_21 * p10_10 + b10_22 * p10_11
-                            + b11_20 * p10_12 + b11_21 * p10_13 + b11_22 * p10_14;
-    const se23_real_t t32 = r00 * t27 + r10 * t29 + r20 * t31;
+    const se23_real_t t45 = p5_10 + U->v.v[1] * p0_10 - U->v.v[0] * p1_10;
+    const se23_real_t t46 = t45 + Bt->blk[1][0].m[2][0] * P[(stride * 9) + 10]
+                            + Bt->blk[1][0].m[2][1] * P[(stride * 10) + 10]
+                            + Bt->blk[1][0].m[2][2] * P[(stride * 10) + 11]
+                            + Bt->blk[1][1].m[2][0] * P[(stride * 10) + 12]
+                            + Bt->blk[1][1].m[2][1] * P[(stride * 10) + 13]
+                            + Bt->blk[1][1].m[2][2] * P[(stride * 10) + 14];
+    const se23_real_t t47 = U->R.m[0][0] * t42 + U->R.m[1][0] * t44 + U->R.m[2][0] * t46;
     const se23_real_t p3_11 = P[(stride * 3) + 11];
-    const se23_real_t t33 = p3_11 + vel2 * p1_11 - vel1 * p2_11;
-    out[(stride * 3) + 10] = t32;
-    out[(stride * 10) + 3] = t32;
-    const se23_real_t p11_12 = P[(stride * 11) + 12];
-    const se23_real_t p11_13 = P[(stride * 11) + 13];
-    const se23_real_t p11_14 = P[(stride * 11) + 14];
-    const se23_real_t t34 = t33 + b10_00 * p9_11 + b10_01 * p10_11 + b10_02 * p11_11
-                            + b11_00 * p11_12 + b11_01 * p11_13 + b11_02 * p11_14;
+    const se23_real_t t48 = p3_11 + U->v.v[2] * p1_11 - U->v.v[1] * p2_11;
+    out[(stride * 3) + 10] = t47;
+    out[(stride * 10) + 3] = t47;
+    const se23_real_t t49 = t48 + Bt->blk[1][0].m[0][0] * P[(stride * 9) + 11]
+                            + Bt->blk[1][0].m[0][1] * P[(stride * 10) + 11]
+                            + Bt->blk[1][0].m[0][2] * P[(stride * 11) + 11]
+                            + Bt->blk[1][1].m[0][0] * P[(stride * 11) + 12]
+                            + Bt->blk[1][1].m[0][1] * P[(stride * 11) + 13]
+                            + Bt->blk[1][1].m[0][2] * P[(stride * 11) + 14];
     const se23_real_t p4_11 = P[(stride * 4) + 11];
-    const se23_real_t t35 = p4_11 - vel2 * p0_11 + vel0 * p2_11;
-    const se23_real_t t36 = t35 + b10_10 * p9_11 + b10_11 * p10_11 + b10_12 * p11_11
-                            + b11_10 * p11_12 + b11_11 * p11_13 + b11_12 * p11_14;
+    const se23_real_t t50 = p4_11 - U->v.v[2] * p0_11 + U->v.v[0] * p2_11;
+    const se23_real_t t51 = t50 + Bt->blk[1][0].m[1][0] * P[(stride * 9) + 11]
+                            + Bt->blk[1][0].m[1][1] * P[(stride * 10) + 11]
+                            + Bt->blk[1][0].m[1][2] * P[(stride * 11) + 11]
+                            + Bt->blk[1][1].m[1][0] * P[(stride * 11) + 12]
+                            + Bt->blk[1][1].m[1][1] * P[(stride * 11) + 13]
+                            + Bt->blk[1][1].m[1][2] * P[(stride * 11) + 14];
     const se23_real_t p5_11 = P[(stride * 5) + 11];
-    const se23_real_t t37 = p5_11 + vel1 * p0_11 - vel0 * p1_11;
-    const se23_real_t t38 = t37 + b10_20 * p9_11 + b10_21 * p10_11 + b10_22 * p11_11
-                            + b11_20 * p11_12 + b11_21 * p11_13 + b11_22 * p11_14;
-    const se23_real_t t39 = r00 * t34 + r10 * t36 + r20 * t38;
-    const se23_real_t t40 = r01 * t20 + r11 * t22 + r21 * t24;
-    out[(stride * 3) + 11] = t39;
-    out[(stride * 11) + 3] = t39;
-    const se23_real_t t41 = r01 * t27 + r11 * t29 + r21 * t31;
-    out[(stride * 4) + 9] = t40;
-    out[(stride * 9) + 4] = t40;
-    const se23_real_t t42 = r01 * t34 + r11 * t36 + r21 * t38;
-    out[(stride * 4) + 10] = t41;
-    out[(stride * 10) + 4] = t41;
-    const se23_real_t t43 = r02 * t20 + r12 * t22 + r22 * t24;
-    out[(stride * 4) + 11] = t42;
-    out[(stride * 11) + 4] = t42;
-    const se23_real_t t44 = r02 * t27 + r12 * t29 + r22 * t31;
-    out[(stride * 5) + 9] = t43;
-    out[(stride * 9) + 5] = t43;
-    const se23_real_t t45 = r02 * t34 + r12 * t36 + r22 * t38;
-    out[(stride * 5) + 10] = t44;
-    out[(stride * 10) + 5] = t44;
-    out[(stride * 5) + 11] = t45;
-    out[(stride * 11) + 5] = t45;
+    const se23_real_t t52 = p5_11 + U->v.v[1] * p0_11 - U->v.v[0] * p1_11;
+    const se23_real_t t53 = t52 + Bt->blk[1][0].m[2][0] * P[(stride * 9) + 11]
+                            + Bt->blk[1][0].m[2][1] * P[(stride * 10) + 11]
+                            + Bt->blk[1][0].m[2][2] * P[(stride * 11) + 11]
+                            + Bt->blk[1][1].m[2][0] * P[(stride * 11) + 12]
+                            + Bt->blk[1][1].m[2][1] * P[(stride * 11) + 13]
+                            + Bt->blk[1][1].m[2][2] * P[(stride * 11) + 14];
+    const se23_real_t t54 = U->R.m[0][0] * t49 + U->R.m[1][0] * t51 + U->R.m[2][0] * t53;
+    const se23_real_t t55 = U->R.m[0][1] * t35 + U->R.m[1][1] * t37 + U->R.m[2][1] * t39;
+    out[(stride * 3) + 11] = t54;
+    out[(stride * 11) + 3] = t54;
+    const se23_real_t t56 = U->R.m[0][1] * t42 + U->R.m[1][1] * t44 + U->R.m[2][1] * t46;
+    out[(stride * 4) + 9] = t55;
+    out[(stride * 9) + 4] = t55;
+    const se23_real_t t57 = U->R.m[0][1] * t49 + U->R.m[1][1] * t51 + U->R.m[2][1] * t53;
+    out[(stride * 4) + 10] = t56;
+    out[(stride * 10) + 4] = t56;
+    const se23_real_t t58 = U->R.m[0][2] * t35 + U->R.m[1][2] * t37 + U->R.m[2][2] * t39;
+    out[(stride * 4) + 11] = t57;
+    out[(stride * 11) + 4] = t57;
+    const se23_real_t t59 = U->R.m[0][2] * t42 + U->R.m[1][2] * t44 + U->R.m[2][2] * t46;
+    out[(stride * 5) + 9] = t58;
+    out[(stride * 9) + 5] = t58;
+    const se23_real_t t60 = U->R.m[0][2] * t49 + U->R.m[1][2] * t51 + U->R.m[2][2] * t53;
+    out[(stride * 5) + 10] = t59;
+    out[(stride * 10) + 5] = t59;
+    out[(stride * 5) + 11] = t60;
+    out[(stride * 11) + 5] = t60;
+    const se23_real_t t61 = t35 + q->qg * Bt->blk[1][0].m[0][0];
+    const se23_real_t t62 = t42 + q->qg * Bt->blk[1][0].m[0][1];
+    const se23_real_t t63 = t49 + q->qg * Bt->blk[1][0].m[0][2];
+    const se23_real_t t64 = Bt->blk[0][0].m[0][0] * t61 + Bt->blk[0][0].m[0][1] * t62
+                            + Bt->blk[0][0].m[0][2] * t63 + p0_9 * Bt->blk[1][0].m[0][0]
+                            + p0_10 * Bt->blk[1][0].m[0][1] + p0_11 * Bt->blk[1][0].m[0][2];
+    S->e[6] = t64;
+    const se23_real_t t65 = t37 + q->qg * Bt->blk[1][0].m[1][0];
+    const se23_real_t t66 = t44 + q->qg * Bt->blk[1][0].m[1][1];
+    const se23_real_t t67 = t51 + q->qg * Bt->blk[1][0].m[1][2];
+    const se23_real_t t68 = Bt->blk[0][0].m[0][0] * t65 + Bt->blk[0][0].m[0][1] * t66
+                            + Bt->blk[0][0].m[0][2] * t67 + p0_9 * Bt->blk[1][0].m[1][0]
+                            + p0_10 * Bt->blk[1][0].m[1][1] + p0_11 * Bt->blk[1][0].m[1][2];
+    S->e[7] = t68;
+    const se23_real_t t69 = t39 + q->qg * Bt->blk[1][0].m[2][0];
+    const se23_real_t t70 = t46 + q->qg * Bt->blk[1][0].m[2][1];
+    const se23_real_t t71 = t53 + q->qg * Bt->blk[1][0].m[2][2];
+    const se23_real_t t72 = Bt->blk[0][0].m[0][0] * t69 + Bt->blk[0][0].m[0][1] * t70
+                            + Bt->blk[0][0].m[0][2] * t71 + p0_9 * Bt->blk[1][0].m[2][0]
+                            + p0_10 * Bt->blk[1][0].m[2][1] + p0_11 * Bt->blk[1][0].m[2][2];
+    S->e[8] = t72;
+    const se23_real_t t73 = Bt->blk[0][0].m[1][0] * t61 + Bt->blk[0][0].m[1][1] * t62
+                            + Bt->blk[0][0].m[1][2] * t63 + p1_9 * Bt->blk[1][0].m[0][0]
+                            + p1_10 * Bt->blk[1][0].m[0][1] + p1_11 * Bt->blk[1][0].m[0][2];
+    S->e[9] = t73;
+    const se23_real_t t74 = Bt->blk[0][0].m[1][0] * t65 + Bt->blk[0][0].m[1][1] * t66
+                            + Bt->blk[0][0].m[1][2] * t67 + p1_9 * Bt->blk[1][0].m[1][0]
+                            + p1_10 * Bt->blk[1][0].m[1][1] + p1_11 * Bt->blk[1][0].m[1][2];
+    S->e[10] = t74;
+    const se23_real_t t75 = Bt->blk[0][0].m[1][0] * t69 + Bt->blk[0][0].m[1][1] * t70
+                            + Bt->blk[0][0].m[1][2] * t71 + p1_9 * Bt->blk[1][0].m[2][0]
+                            + p1_10 * Bt->blk[1][0].m[2][1] + p1_11 * Bt->blk[1][0].m[2][2];
+    S->e[11] = t75;
+    const se23_real_t t76 = Bt->blk[0][0].m[2][0] * t61 + Bt->blk[0][0].m[2][1] * t62
+                            + Bt->blk[0][0].m[2][2] * t63 + p2_9 * Bt->blk[1][0].m[0][0]
+                            + p2_10 * Bt->blk[1][0].m[0][1] + p2_11 * Bt->blk[1][0].m[0][2];
+    S->e[12] = t76;
+    const se23_real_t t77 = Bt->blk[0][0].m[2][0] * t65 + Bt->blk[0][0].m[2][1] * t66
+                            + Bt->blk[0][0].m[2][2] * t67 + p2_9 * Bt->blk[1][0].m[1][0]
+                            + p2_10 * Bt->blk[1][0].m[1][1] + p2_11 * Bt->blk[1][0].m[1][2];
+    S->e[13] = t77;
+    const se23_real_t t78 = Bt->blk[0][0].m[2][0] * t69 + Bt->blk[0][0].m[2][1] * t70
+                            + Bt->blk[0][0].m[2][2] * t71 + p2_9 * Bt->blk[1][0].m[2][0]
+                            + p2_10 * Bt->blk[1][0].m[2][1] + p2_11 * Bt->blk[1][0].m[2][2];
+    S->e[14] = t78;
+    const se23_real_t t79 = Bt->blk[1][0].m[0][0] * t61 + Bt->blk[1][0].m[0][1] * t62
+                            + Bt->blk[1][0].m[0][2] * t63 + t34 * Bt->blk[1][0].m[0][0]
+                            + t41 * Bt->blk[1][0].m[0][1] + t48 * Bt->blk[1][0].m[0][2];
+    S->e[24] = t79;
+    const se23_real_t t80 = Bt->blk[1][0].m[0][0] * t65 + Bt->blk[1][0].m[0][1] * t66
+                            + Bt->blk[1][0].m[0][2] * t67 + t34 * Bt->blk[1][0].m[1][0]
+                            + t41 * Bt->blk[1][0].m[1][1] + t48 * Bt->blk[1][0].m[1][2];
+    S->e[25] = t80;
+    const se23_real_t t81 = Bt->blk[1][0].m[0][0] * t69 + Bt->blk[1][0].m[0][1] * t70
+                            + Bt->blk[1][0].m[0][2] * t71 + t34 * Bt->blk[1][0].m[2][0]
+                            + t41 * Bt->blk[1][0].m[2][1] + t48 * Bt->blk[1][0].m[2][2];
+    S->e[26] = t81;
+    const se23_real_t t82 = Bt->blk[1][0].m[1][0] * t65 + Bt->blk[1][0].m[1][1] * t66
+                            + Bt->blk[1][0].m[1][2] * t67 + t36 * Bt->blk[1][0].m[1][0]
+                            + t43 * Bt->blk[1][0].m[1][1] + t50 * Bt->blk[1][0].m[1][2];
+    S->e[27] = t82;
+    const se23_real_t t83 = Bt->blk[1][0].m[1][0] * t69 + Bt->blk[1][0].m[1][1] * t70
+                            + Bt->blk[1][0].m[1][2] * t71 + t36 * Bt->blk[1][0].m[2][0]
+                            + t43 * Bt->blk[1][0].m[2][1] + t50 * Bt->blk[1][0].m[2][2];
+    S->e[28] = t83;
+    const se23_real_t t84 = Bt->blk[1][0].m[2][0] * t69 + Bt->blk[1][0].m[2][1] * t70
+                            + Bt->blk[1][0].m[2][2] * t71 + t38 * Bt->blk[1][0].m[2][0]
+                            + t45 * Bt->blk[1][0].m[2][1] + t52 * Bt->blk[1][0].m[2][2];
+    S->e[29] = t84;
     const se23_real_t p6_9 = P[(stride * 6) + 9];
-    const se23_real_t pos2 = U->p.v[2];
-    const se23_real_t pos1 = U->p.v[1];
-    const se23_real_t t46 = p6_9 + dt * p3_9 + pos2 * p1_9 - pos1 * p2_9;
-    const se23_real_t b20_00 = Bt->blk[2][0].m[0][0];
-    const se23_real_t b20_01 = Bt->blk[2][0].m[0][1];
-    const se23_real_t b20_02 = Bt->blk[2][0].m[0][2];
-    const se23_real_t b21_00 = Bt->blk[2][1].m[0][0];
-    const se23_real_t b21_01 = Bt->blk[2][1].m[0][1];
-    const se23_real_t b21_02 = Bt->blk[2][1].m[0][2];
-    const se23_real_t t47 = t46 + b20_00 * p9_9 + b20_01 * p9_10 + b20_02 * p9_11
-                            + b21_00 * p9_12 + b21_01 * p9_13 + b21_02 * p9_14;
+    const se23_real_t t85 = p6_9 + dt * p3_9 + U->p.v[2] * p1_9 - U->p.v[1] * p2_9;
+    const se23_real_t t86 = t85 + Bt->blk[2][0].m[0][0] * P[(stride * 9) + 9]
+                            + Bt->blk[2][0].m[0][1] * P[(stride * 9) + 10]
+                            + Bt->blk[2][0].m[0][2] * P[(stride * 9) + 11]
+                            + Bt->blk[2][1].m[0][0] * P[(stride * 9) + 12]
+                            + Bt->blk[2][1].m[0][1] * P[(stride * 9) + 13]
+                            + Bt->blk[2][1].m[0][2] * P[(stride * 9) + 14];
     const se23_real_t p7_9 = P[(stride * 7) + 9];
-    const se23_real_t pos0 = U->p.v[0];
-    const se23_real_t t48 = p7_9 + dt * p4_9 - pos2 * p0_9 + pos0 * p2_9;
-    const se23_real_t b20_10 = Bt->blk[2][0].m[1][0];
-    const se23_real_t b20_11 = Bt->blk[2][0].m[1][1];
-    const se23_real_t b20_12 = Bt->blk[2][0].m[1][2];
-    const se23_real_t b21_10 = Bt->blk[2][1].m[1][0];
-    const se23_real_t b21_11 = Bt->blk[2][1].m[1][1];
-    const se23_real_t b21_12 = Bt->blk[2][1].m[1][2];
-    const se23_real_t t49 = t48 + b20_10 * p9_9 + b20_11 * p9_10 + b20_12 * p9_11
-                            + b21_10 * p9_12 + b21_11 * p9_13 + b21_12 * p9_14;
+    const se23_real_t t87 = p7_9 + dt * p4_9 - U->p.v[2] * p0_9 + U->p.v[0] * p2_9;
+    const se23_real_t t88 = t87 + Bt->blk[2][0].m[1][0] * P[(stride * 9) + 9]
+                            + Bt->blk[2][0].m[1][1] * P[(stride * 9) + 10]
+                            + Bt->blk[2][0].m[1][2] * P[(stride * 9) + 11]
+                            + Bt->blk[2][1].m[1][0] * P[(stride * 9) + 12]
+                            + Bt->blk[2][1].m[1][1] * P[(stride * 9) + 13]
+                            + Bt->blk[2][1].m[1][2] * P[(stride * 9) + 14];
     const se23_real_t p8_9 = P[(stride * 8) + 9];
-    const se23_real_t t50 = p8_9 + dt * p5_9 + pos1 * p0_9 - pos0 * p1_9;
-    const se23_real_t b20_20 = Bt->blk[2][0].m[2][0];
-    const se23_real_t b20_21 = Bt->blk[2][0].m[2][1];
-    const se23_real_t b20_22 = Bt->blk[2][0].m[2][2];
-    const se23_real_t b21_20 = Bt->blk[2][1].m[2][0];
-    const se23_real_t b21_21 = Bt->blk[2][1].m[2][1];
-    const se23_real_t b21_22 = Bt->blk[2][1].m[2][2];
-    const se23_real_t t51 = t50 + b20_20 * p9_9 + b20_21 * p9_10 + b20_22 * p9_11
-                            + b21_20 * p9_12 + b21_21 * p9_13 + b21_22 * p9_14;
-    const se23_real_t t52 = r00 * t47 + r10 * t49 + r20 * t51;
+    const se23_real_t t89 = p8_9 + dt * p5_9 + U->p.v[1] * p0_9 - U->p.v[0] * p1_9;
+    const se23_real_t t90 = t89 + Bt->blk[2][0].m[2][0] * P[(stride * 9) + 9]
+                            + Bt->blk[2][0].m[2][1] * P[(stride * 9) + 10]
+                            + Bt->blk[2][0].m[2][2] * P[(stride * 9) + 11]
+                            + Bt->blk[2][1].m[2][0] * P[(stride * 9) + 12]
+                            + Bt->blk[2][1].m[2][1] * P[(stride * 9) + 13]
+                            + Bt->blk[2][1].m[2][2] * P[(stride * 9) + 14];
+    const se23_real_t t91 = U->R.m[0][0] * t86 + U->R.m[1][0] * t88 + U->R.m[2][0] * t90;
     const se23_real_t p6_10 = P[(stride * 6) + 10];
-    const se23_real_t t53 = p6_10 + dt * p3_10 + pos2 * p1_10 - pos1 * p2_10;
-    out[(stride * 6) + 9] = t52;
-    out[(stride * 9) + 6] = t52;
-    const se23_real_t t54 = t53 + b20_00 * p9_10 + b20_01 * p10_10 + b20_02 * p10_11
-                            + b21_00 * p10_12 + b21_01 * p10_13 + b21_02 * p10_14;
+    const se23_real_t t92 = p6_10 + dt * p3_10 + U->p.v[2] * p1_10 - U->p.v[1] * p2_10;
+    out[(stride * 6) + 9] = t91;
+    out[(stride * 9) + 6] = t91;
+    const se23_real_t t93 = t92 + Bt->blk[2][0].m[0][0] * P[(stride * 9) + 10]
+                            + Bt->blk[2][0].m[0][1] * P[(stride * 10) + 10]
+                            + Bt->blk[2][0].m[0][2] * P[(stride * 10) + 11]
+                            + Bt->blk[2][1].m[0][0] * P[(stride * 10) + 12]
+                            + Bt->blk[2][1].m[0][1] * P[(stride * 10) + 13]
+                            + Bt->blk[2][1].m[0][2] * P[(stride * 10) + 14];
     const se23_real_t p7_10 = P[(stride * 7) + 10];
-    const se23_real_t t55 = p7_10 + dt * p4_10 - pos2 * p0_10 + pos0 * p2_10;
-    const se23_real_t t56 = t55 + b20_10 * p9_10 + b20_11 * p10_10 + b20_12 * p10_11
-                            + b21_10 * p10_12 + b21_11 * p10_13 + b21_12 * p10_14;
+    const se23_real_t t94 = p7_10 + dt * p4_10 - U->p.v[2] * p0_10 + U->p.v[0] * p2_10;
+    const se23_real_t t95 = t94 + Bt->blk[2][0].m[1][0] * P[(stride * 9) + 10]
+                            + Bt->blk[2][0].m[1][1] * P[(stride * 10) + 10]
+                            + Bt->blk[2][0].m[1][2] * P[(stride * 10) + 11]
+                            + Bt->blk[2][1].m[1][0] * P[(stride * 10) + 12]
+                            + Bt->blk[2][1].m[1][1] * P[(stride * 10) + 13]
+                            + Bt->blk[2][1].m[1][2] * P[(stride * 10) + 14];
     const se23_real_t p8_10 = P[(stride * 8) + 10];
-    const se23_real_t t57 = p8_10 + dt * p5_10 + pos1 * p0_10 - pos0 * p1_10;
-    const se23_real_t t58 = t57 + b20_20 * p9_10 + b20_21 * p10_10 + b20_22 * p10_11
-                            + b21_20 * p10_12 + b21_21 * p10_13 + b21_22 * p10_14;
-    const se23_real_t t59 = r00 * t54 + r10 * t56 + r20 * t58;
+    const se23_real_t t96 = p8_10 + dt * p5_10 + U->p.v[1] * p0_10 - U->p.v[0] * p1_10;
+    const se23_real_t t97 = t96 + Bt->blk[2][0].m[2][0] * P[(stride * 9) + 10]
+                            + Bt->blk[2][0].m[2][1] * P[(stride * 10) + 10]
+                            + Bt->blk[2][0].m[2][2] * P[(stride * 10) + 11]
+                            + Bt->blk[2][1].m[2][0] * P[(stride * 10) + 12]
+                            + Bt->blk[2][1].m[2][1] * P[(stride * 10) + 13]
+                            + Bt->blk[2][1].m[2][2] * P[(stride * 10) + 14];
+    const se23_real_t t98 = U->R.m[0][0] * t93 + U->R.m[1][0] * t95 + U->R.m[2][0] * t97;
     const se23_real_t p6_11 = P[(stride * 6) + 11];
-    const se23_real_t t60 = p6_11 + dt * p3_11 + pos2 * p1_11 - pos1 * p2_11;
-    out[(stride * 6) + 10] = t59;
-    out[(stride * 10) + 6] = t59;
-    const se23_real_t t61 = t60 + b20_00 * p9_11 + b20_01 * p10_11 + b20_02 * p11_11
-                            + b21_00 * p11_12 + b21_01 * p11_13 + b21_02 * p11_14;
+    const se23_real_t t99 = p6_11 + dt * p3_11 + U->p.v[2] * p1_11 - U->p.v[1] * p2_11;
+    out[(stride * 6) + 10] = t98;
+    out[(stride * 10) + 6] = t98;
+    const se23_real_t t100 = t99 + Bt->blk[2][0].m[0][0] * P[(stride * 9) + 11]
+                             + Bt->blk[2][0].m[0][1] * P[(stride * 10) + 11]
+                             + Bt->blk[2][0].m[0][2] * P[(stride * 11) + 11]
+                             + Bt->blk[2][1].m[0][0] * P[(stride * 11) + 12]
+                             + Bt->blk[2][1].m[0][1] * P[(stride * 11) + 13]
+                             + Bt->blk[2][1].m[0][2] * P[(stride * 11) + 14];
     const se23_real_t p7_11 = P[(stride * 7) + 11];
-    const se23_real_t t62 = p7_11 + dt * p4_11 - pos2 * p0_11 + pos0 * p2_11;
-    const se23_real_t t63 = t62 + b20_10 * p9_11 + b20_11 * p10_11 + b20_12 * p11_11
-                            + b21_10 * p11_12 + b21_11 * p11_13 + b21_12 * p11_14;
+    const se23_real_t t101 = p7_11 + dt * p4_11 - U->p.v[2] * p0_11 + U->p.v[0] * p2_11;
+    const se23_real_t t102 = t101 + Bt->blk[2][0].m[1][0] * P[(stride * 9) + 11]
+                             + Bt->blk[2][0].m[1][1] * P[(stride * 10) + 11]
+                             + Bt->blk[2][0].m[1][2] * P[(stride * 11) + 11]
+                             + Bt->blk[2][1].m[1][0] * P[(stride * 11) + 12]
+                             + Bt->blk[2][1].m[1][1] * P[(stride * 11) + 13]
+                             + Bt->blk[2][1].m[1][2] * P[(stride * 11) + 14];
     const se23_real_t p8_11 = P[(stride * 8) + 11];
-    const se23_real_t t64 = p8_11 + dt * p5_11 + pos1 * p0_11 - pos0 * p1_11;
-    const se23_real_t t65 = t64 + b20_20 * p9_11 + b20_21 * p10_11 + b20_22 * p11_11
-                            + b21_20 * p11_12 + b21_21 * p11_13 + b21_22 * p11_14;
-    const se23_real_t t66 = r00 * t61 + r10 * t63 + r20 * t65;
-    const se23_real_t t67 = r01 * t47 + r11 * t49 + r21 * t51;
-    out[(stride * 6) + 11] = t66;
-    out[(stride * 11) + 6] = t66;
-    const se23_real_t t68 = r01 * t54 + r11 * t56 + r21 * t58;
-    out[(stride * 7) + 9] = t67;
-    out[(stride * 9) + 7] = t67;
-    const se23_real_t t69 = r01 * t61 + r11 * t63 + r21 * t65;
-    out[(stride * 7) + 10] = t68;
-    out[(stride * 10) + 7] = t68;
-    const se23_real_t t70 = r02 * t47 + r12 * t49 + r22 * t51;
-    out[(stride * 7) + 11] = t69;
-    out[(stride * 11) + 7] = t69;
-    const se23_real_t t71 = r02 * t54 + r12 * t56 + r22 * t58;
-    out[(stride * 8) + 9] = t70;
-    out[(stride * 9) + 8] = t70;
-    const se23_real_t t72 = r02 * t61 + r12 * t63 + r22 * t65;
-    out[(stride * 8) + 10] = t71;
-    out[(stride * 10) + 8] = t71;
-    out[(stride * 8) + 11] = t72;
-    out[(stride * 11) + 8] = t72;
-    const se23_real_t qg = q->qg;
-    const se23_real_t t73 = t1 + qg * b00_00;
-    const se23_real_t t74 = t5 + qg * b00_01;
-    const se23_real_t t75 = t9 + qg * b00_02;
-    const se23_real_t t76 = b00_00 * t73 + b00_01 * t74 + b00_02 * t75 + p0_9 * b00_00
-                            + p0_10 * b00_01 + p0_11 * b00_02;
-    S->e[0] = t76;
-    const se23_real_t t77 = t2 + qg * b00_10;
-    const se23_real_t t78 = t6 + qg * b00_11;
-    const se23_real_t t79 = t10 + qg * b00_12;
-    const se23_real_t t80 = b00_00 * t77 + b00_01 * t78 + b00_02 * t79 + p0_9 * b00_10
-                            + p0_10 * b00_11 + p0_11 * b00_12;
-    S->e[1] = t80;
-    const se23_real_t t81 = t3 + qg * b00_20;
-    const se23_real_t t82 = t7 + qg * b00_21;
-    const se23_real_t t83 = t11 + qg * b00_22;
-    const se23_real_t t84 = b00_00 * t81 + b00_01 * t82 + b00_02 * t83 + p0_9 * b00_20
-                            + p0_10 * b00_21 + p0_11 * b00_22;
-    S->e[2] = t84;
-    const se23_real_t t85 = b00_10 * t77 + b00_11 * t78 + b00_12 * t79 + p1_9 * b00_10
-                            + p1_10 * b00_11 + p1_11 * b00_12;
-    S->e[3] = t85;
-    const se23_real_t t86 = b00_10 * t81 + b00_11 * t82 + b00_12 * t83 + p1_9 * b00_20
-                            + p1_10 * b00_21 + p1_11 * b00_22;
-    S->e[4] = t86;
-    const se23_real_t t87 = b00_20 * t81 + b00_21 * t82 + b00_22 * t83 + p2_9 * b00_20
-                            + p2_10 * b00_21 + p2_11 * b00_22;
-    S->e[5] = t87;
-    const se23_real_t t88 = t20 + qg * b10_00;
-    const se23_real_t t89 = t27 + qg * b10_01;
-    const se23_real_t t90 = t34 + qg * b10_02;
-    const se23_real_t t91 = b00_00 * t88 + b00_01 * t89 + b00_02 * t90 + p0_9 * b10_00
-                            + p0_10 * b10_01 + p0_11 * b10_02;
-    S->e[6] = t91;
-    const se23_real_t t92 = t22 + qg * b10_10;
-    const se23_real_t t93 = t29 + qg * b10_11;
-    const se23_real_t t94 = t36 + qg * b10_12;
-    const se23_real_t t95 = b00_00 * t92 + b00_01 * t93 + b00_02 * t94 + p0_9 * b10_10
-                            + p0_10 * b10_11 + p0_11 * b10_12;
-    S->e[7] = t95;
-    const se23_real_t t96 = t24 + qg * b10_20;
-    const se23_real_t t97 = t31 + qg * b10_21;
-    const se23_real_t t98 = t38 + qg * b10_22;
-    const se23_real_t t99 = b00_00 * t96 + b00_01 * t97 + b00_02 * t98 + p0_9 * b10_20
-                            + p0_10 * b10_21 + p0_11 * b10_22;
-    S->e[8] = t99;
-    const se23_real_t t100 = b00_10 * t88 + b00_11 * t89 + b00_12 * t90 + p1_9 * b10_00
-                             + p1_10 * b10_01 + p1_11 * b10_02;
-    S->e[9] = t100;
-    const se23_real_t t101 = b00_10 * t92 + b00_11 * t93 + b00_12 * t94 + p1_9 * b10_10
-                             + p1_10 * b10_11 + p1_11 * b10_12;
-    S->e[10] = t101;
-    const se23_real_t t102 = b00_10 * t96 + b00_11 * t97 + b00_12 * t98 + p1_9 * b10_20
-                             + p1_10 * b10_21 + p1_11 * b10_22;
-    S->e[11] = t102;
-    const se23_real_t t103 = b00_20 * t88 + b00_21 * t89 + b00_22 * t90 + p2_9 * b10_00
-                             + p2_10 * b10_01 + p2_11 * b10_02;
-    S->e[12] = t103;
-    const se23_real_t t104 = b00_20 * t92 + b00_21 * t93 + b00_22 * t94 + p2_9 * b10_10
-                             + p2_10 * b10_11 + p2_11 * b10_12;
-    S->e[13] = t104;
-    const se23_real_t t105 = b00_20 * t96 + b00_21 * t97 + b00_22 * t98 + p2_9 * b10_20
-                             + p2_10 * b10_21 + p2_11 * b10_22;
-    S->e[14] = t105;
-    const se23_real_t t106 = t47 + qg * b20_00;
-    const se23_real_t t107 = t54 + qg * b20_01;
-    const se23_real_t t108 = t61 + qg * b20_02;
-    const se23_real_t t109 = b00_00 * t106 + b00_01 * t107 + b00_02 * t108 + p0_9 * b20_00
-                             + p0_10 * b20_01 + p0_11 * b20_02;
-    S->e[15] = t109;
-    const se23_real_t t110 = t49 + qg * b20_10;
-    const se23_real_t t111 = t56 + qg * b20_11;
-    const se23_real_t t112 = t63 + qg * b20_12;
-    const se23_real_t t113 = b00_00 * t110 + b00_01 * t111 + b00_02 * t112 + p0_9 * b20_10
-                             + p0_10 * b20_11 + p0_11 * b20_12;
-    S->e[16] = t113;
-    const se23_real_t t114 = t51 + qg * b20_20;
-    const se23_real_t t115 = t58 + qg * b20_21;
-    const se23_real_t t116 = t65 + qg * b20_22;
-    const se23_real_t t117 = b00_00 * t114 + b00_01 * t115 + b00_02 * t116 + p0_9 * b20_20
-                             + p0_10 * b20_21 + p0_11 * b20_22;
-    S->e[17] = t117;
-    const se23_real_t t118 = b00_10 * t106 + b00_11 * t107 + b00_12 * t108 + p1_9 * b20_00
-                             + p1_10 * b20_01 + p1_11 * b20_02;
-    S->e[18] = t118;
-    const se23_real_t t119 = b00_10 * t110 + b00_11 * t111 + b00_12 * t112 + p1_9 * b20_10
-                             + p1_10 * b20_11 + p1_11 * b20_12;
-    S->e[19] = t119;
-    const se23_real_t t120 = b00_10 * t114 + b00_11 * t115 + b00_12 * t116 + p1_9 * b20_20
-                             + p1_10 * b20_21 + p1_11 * b20_22;
-    S->e[20] = t120;
-    const se23_real_t t121 = b00_20 * t106 + b00_21 * t107 + b00_22 * t108 + p2_9 * b20_00
-                             + p2_10 * b20_01 + p2_11 * b20_02;
-    S->e[21] = t121;
-    const se23_real_t t122 = b00_20 * t110 + b00_21 * t111 + b00_22 * t112 + p2_9 * b20_10
-                             + p2_10 * b20_11 + p2_11 * b20_12;
-    S->e[22] = t122;
-    const se23_real_t t123 = b00_20 * t114 + b00_21 * t115 + b00_22 * t116 + p2_9 * b20_20
-                             + p2_10 * b20_21 + p2_11 * b20_22;
-    S->e[23] = t123;
-    const se23_real_t t124 = b10_00 * t88 + b10_01 * t89 + b10_02 * t90 + t19 * b10_00
-                             + t26 * b10_01 + t33 * b10_02;
-    S->e[24] = t124;
-    const se23_real_t t125 = b10_00 * t92 + b10_01 * t93 + b10_02 * t94 + t19 * b10_10
-                             + t26 * b10_11 + t33 * b10_12;
-    S->e[25] = t125;
-    const se23_real_t t126 = b10_00 * t96 + b10_01 * t97 + b10_02 * t98 + t19 * b10_20
-                             + t26 * b10_21 + t33 * b10_22;
-    S->e[26] = t126;
-    const se23_real_t t127 = b10_10 * t92 + b10_11 * t93 + b10_12 * t94 + t21 * b10_10
-                             + t28 * b10_11 + t35 * b10_12;
-    S->e[27] = t127;
-    const se23_real_t t128 = b10_10 * t96 + b10_11 * t97 + b10_12 * t98 + t21 * b10_20
-                             + t28 * b10_21 + t35 * b10_22;
-    S->e[28] = t128;
-    const se23_real_t t129 = b10_20 * t96 + b10_21 * t97 + b10_22 * t98 + t23 * b10_20
-                             + t30 * b10_21 + t37 * b10_22;
-    S->e[29] = t129;
-    const se23_real_t t130 = b10_00 * t106 + b10_01 * t107 + b10_02 * t108 + t19 * b20_00
-                             + t26 * b20_01 + t33 * b20_02;
+    const se23_real_t t103 = p8_11 + dt * p5_11 + U->p.v[1] * p0_11 - U->p.v[0] * p1_11;
+    const se23_real_t t104 = t103 + Bt->blk[2][0].m[2][0] * P[(stride * 9) + 11]
+                             + Bt->blk[2][0].m[2][1] * P[(stride * 10) + 11]
+                             + Bt->blk[2][0].m[2][2] * P[(stride * 11) + 11]
+                             + Bt->blk[2][1].m[2][0] * P[(stride * 11) + 12]
+                             + Bt->blk[2][1].m[2][1] * P[(stride * 11) + 13]
+                             + Bt->blk[2][1].m[2][2] * P[(stride * 11) + 14];
+    const se23_real_t t105 = U->R.m[0][0] * t100 + U->R.m[1][0] * t102 + U->R.m[2][0] * t104;
+    const se23_real_t t106 = U->R.m[0][1] * t86 + U->R.m[1][1] * t88 + U->R.m[2][1] * t90;
+    out[(stride * 6) + 11] = t105;
+    out[(stride * 11) + 6] = t105;
+    const se23_real_t t107 = U->R.m[0][1] * t93 + U->R.m[1][1] * t95 + U->R.m[2][1] * t97;
+    out[(stride * 7) + 9] = t106;
+    out[(stride * 9) + 7] = t106;
+    const se23_real_t t108 = U->R.m[0][1] * t100 + U->R.m[1][1] * t102 + U->R.m[2][1] * t104;
+    out[(stride * 7) + 10] = t107;
+    out[(stride * 10) + 7] = t107;
+    const se23_real_t t109 = U->R.m[0][2] * t86 + U->R.m[1][2] * t88 + U->R.m[2][2] * t90;
+    out[(stride * 7) + 11] = t108;
+    out[(stride * 11) + 7] = t108;
+    const se23_real_t t110 = U->R.m[0][2] * t93 + U->R.m[1][2] * t95 + U->R.m[2][2] * t97;
+    out[(stride * 8) + 9] = t109;
+    out[(stride * 9) + 8] = t109;
+    const se23_real_t t111 = U->R.m[0][2] * t100 + U->R.m[1][2] * t102 + U->R.m[2][2] * t104;
+    out[(stride * 8) + 10] = t110;
+    out[(stride * 10) + 8] = t110;
+    out[(stride * 8) + 11] = t111;
+    out[(stride * 11) + 8] = t111;
+    const se23_real_t t112 = t86 + q->qg * Bt->blk[2][0].m[0][0];
+    const se23_real_t t113 = t93 + q->qg * Bt->blk[2][0].m[0][1];
+    const se23_real_t t114 = t100 + q->qg * Bt->blk[2][0].m[0][2];
+    const se23_real_t t115 = Bt->blk[0][0].m[0][0] * t112 + Bt->blk[0][0].m[0][1] * t113
+                             + Bt->blk[0][0].m[0][2] * t114 + p0_9 * Bt->blk[2][0].m[0][0]
+                             + p0_10 * Bt->blk[2][0].m[0][1] + p0_11 * Bt->blk[2][0].m[0][2];
+    S->e[15] = t115;
+    const se23_real_t t116 = t88 + q->qg * Bt->blk[2][0].m[1][0];
+    const se23_real_t t117 = t95 + q->qg * Bt->blk[2][0].m[1][1];
+    const se23_real_t t118 = t102 + q->qg * Bt->blk[2][0].m[1][2];
+    const se23_real_t t119 = Bt->blk[0][0].m[0][0] * t116 + Bt->blk[0][0].m[0][1] * t117
+                             + Bt->blk[0][0].m[0][2] * t118 + p0_9 * Bt->blk[2][0].m[1][0]
+                             + p0_10 * Bt->blk[2][0].m[1][1] + p0_11 * Bt->blk[2][0].m[1][2];
+    S->e[16] = t119;
+    const se23_real_t t120 = t90 + q->qg * Bt->blk[2][0].m[2][0];
+    const se23_real_t t121 = t97 + q->qg * Bt->blk[2][0].m[2][1];
+    const se23_real_t t122 = t104 + q->qg * Bt->blk[2][0].m[2][2];
+    const se23_real_t t123 = Bt->blk[0][0].m[0][0] * t120 + Bt->blk[0][0].m[0][1] * t121
+                             + Bt->blk[0][0].m[0][2] * t122 + p0_9 * Bt->blk[2][0].m[2][0]
+                             + p0_10 * Bt->blk[2][0].m[2][1] + p0_11 * Bt->blk[2][0].m[2][2];
+    S->e[17] = t123;
+    const se23_real_t t124 = Bt->blk[0][0].m[1][0] * t112 + Bt->blk[0][0].m[1][1] * t113
+                             + Bt->blk[0][0].m[1][2] * t114 + p1_9 * Bt->blk[2][0].m[0][0]
+                             + p1_10 * Bt->blk[2][0].m[0][1] + p1_11 * Bt->blk[2][0].m[0][2];
+    S->e[18] = t124;
+    const se23_real_t t125 = Bt->blk[0][0].m[1][0] * t116 + Bt->blk[0][0].m[1][1] * t117
+                             + Bt->blk[0][0].m[1][2] * t118 + p1_9 * Bt->blk[2][0].m[1][0]
+                             + p1_10 * Bt->blk[2][0].m[1][1] + p1_11 * Bt->blk[2][0].m[1][2];
+    S->e[19] = t125;
+    const se23_real_t t126 = Bt->blk[0][0].m[1][0] * t120 + Bt->blk[0][0].m[1][1] * t121
+                             + Bt->blk[0][0].m[1][2] * t122 + p1_9 * Bt->blk[2][0].m[2][0]
+                             + p1_10 * Bt->blk[2][0].m[2][1] + p1_11 * Bt->blk[2][0].m[2][2];
+    S->e[20] = t126;
+    const se23_real_t t127 = Bt->blk[0][0].m[2][0] * t112 + Bt->blk[0][0].m[2][1] * t113
+                             + Bt->blk[0][0].m[2][2] * t114 + p2_9 * Bt->blk[2][0].m[0][0]
+                             + p2_10 * Bt->blk[2][0].m[0][1] + p2_11 * Bt->blk[2][0].m[0][2];
+    S->e[21] = t127;
+    const se23_real_t t128 = Bt->blk[0][0].m[2][0] * t116 + Bt->blk[0][0].m[2][1] * t117
+                             + Bt->blk[0][0].m[2][2] * t118 + p2_9 * Bt->blk[2][0].m[1][0]
+                             + p2_10 * Bt->blk[2][0].m[1][1] + p2_11 * Bt->blk[2][0].m[1][2];
+    S->e[22] = t128;
+    const se23_real_t t129 = Bt->blk[0][0].m[2][0] * t120 + Bt->blk[0][0].m[2][1] * t121
+                             + Bt->blk[0][0].m[2][2] * t122 + p2_9 * Bt->blk[2][0].m[2][0]
+                             + p2_10 * Bt->blk[2][0].m[2][1] + p2_11 * Bt->blk[2][0].m[2][2];
+    S->e[23] = t129;
+    const se23_real_t t130 = Bt->blk[1][0].m[0][0] * t112 + Bt->blk[1][0].m[0][1] * t113
+                             + Bt->blk[1][0].m[0][2] * t114 + t34 * Bt->blk[2][0].m[0][0]
+                             + t41 * Bt->blk[2][0].m[0][1] + t48 * Bt->blk[2][0].m[0][2];
     S->e[30] = t130;
-    const se23_real_t t131 = b10_00 * t110 + b10_01 * t111 + b10_02 * t112 + t19 * b20_10
-                             + t26 * b20_11 + t33 * b20_12;
+    const se23_real_t t131 = Bt->blk[1][0].m[0][0] * t116 + Bt->blk[1][0].m[0][1] * t117
+                             + Bt->blk[1][0].m[0][2] * t118 + t34 * Bt->blk[2][0].m[1][0]
+                             + t41 * Bt->blk[2][0].m[1][1] + t48 * Bt->blk[2][0].m[1][2];
     S->e[31] = t131;
-    const se23_real_t t132 = b10_00 * t114 + b10_01 * t115 + b10_02 * t116 + t19 * b20_20
-                             + t26 * b20_21 + t33 * b20_22;
+    const se23_real_t t132 = Bt->blk[1][0].m[0][0] * t120 + Bt->blk[1][0].m[0][1] * t121
+                             + Bt->blk[1][0].m[0][2] * t122 + t34 * Bt->blk[2][0].m[2][0]
+                             + t41 * Bt->blk[2][0].m[2][1] + t48 * Bt->blk[2][0].m[2][2];
     S->e[32] = t132;
-    const se23_real_t t133 = b10_10 * t106 + b10_11 * t107 + b10_12 * t108 + t21 * b20_00
-                             + t28 * b20_01 + t35 * b20_02;
+    const se23_real_t t133 = Bt->blk[1][0].m[1][0] * t112 + Bt->blk[1][0].m[1][1] * t113
+                             + Bt->blk[1][0].m[1][2] * t114 + t36 * Bt->blk[2][0].m[0][0]
+                             + t43 * Bt->blk[2][0].m[0][1] + t50 * Bt->blk[2][0].m[0][2];
     S->e[33] = t133;
-    const se23_real_t t134 = b10_10 * t110 + b10_11 * t111 + b10_12 * t112 + t21 * b20_10
-                             + t28 * b20_11 + t35 * b20_12;
+    const se23_real_t t134 = Bt->blk[1][0].m[1][0] * t116 + Bt->blk[1][0].m[1][1] * t117
+                             + Bt->blk[1][0].m[1][2] * t118 + t36 * Bt->blk[2][0].m[1][0]
+                             + t43 * Bt->blk[2][0].m[1][1] + t50 * Bt->blk[2][0].m[1][2];
     S->e[34] = t134;
-    const se23_real_t t135 = b10_10 * t114 + b10_11 * t115 + b10_12 * t116 + t21 * b20_20
-                             + t28 * b20_21 + t35 * b20_22;
+    const se23_real_t t135 = Bt->blk[1][0].m[1][0] * t120 + Bt->blk[1][0].m[1][1] * t121
+                             + Bt->blk[1][0].m[1][2] * t122 + t36 * Bt->blk[2][0].m[2][0]
+                             + t43 * Bt->blk[2][0].m[2][1] + t50 * Bt->blk[2][0].m[2][2];
     S->e[35] = t135;
-    const se23_real_t t136 = b10_20 * t106 + b10_21 * t107 + b10_22 * t108 + t23 * b20_00
-                             + t30 * b20_01 + t37 * b20_02;
+    const se23_real_t t136 = Bt->blk[1][0].m[2][0] * t112 + Bt->blk[1][0].m[2][1] * t113
+                             + Bt->blk[1][0].m[2][2] * t114 + t38 * Bt->blk[2][0].m[0][0]
+                             + t45 * Bt->blk[2][0].m[0][1] + t52 * Bt->blk[2][0].m[0][2];
     S->e[36] = t136;
-    const se23_real_t t137 = b10_20 * t110 + b10_21 * t111 + b10_22 * t112 + t23 * b20_10
-                             + t30 * b20_11 + t37 * b20_12;
+    const se23_real_t t137 = Bt->blk[1][0].m[2][0] * t116 + Bt->blk[1][0].m[2][1] * t117
+                             + Bt->blk[1][0].m[2][2] * t118 + t38 * Bt->blk[2][0].m[1][0]
+                             + t45 * Bt->blk[2][0].m[1][1] + t52 * Bt->blk[2][0].m[1][2];
     S->e[37] = t137;
-    const se23_real_t t138 = b10_20 * t114 + b10_21 * t115 + b10_22 * t116 + t23 * b20_20
-                             + t30 * b20_21 + t37 * b20_22;
+    const se23_real_t t138 = Bt->blk[1][0].m[2][0] * t120 + Bt->blk[1][0].m[2][1] * t121
+                             + Bt->blk[1][0].m[2][2] * t122 + t38 * Bt->blk[2][0].m[2][0]
+                             + t45 * Bt->blk[2][0].m[2][1] + t52 * Bt->blk[2][0].m[2][2];
     S->e[38] = t138;
-    const se23_real_t t139 = b20_00 * t106 + b20_01 * t107 + b20_02 * t108 + t46 * b20_00
-                             + t53 * b20_01 + t60 * b20_02;
+    const se23_real_t t139 = Bt->blk[2][0].m[0][0] * t112 + Bt->blk[2][0].m[0][1] * t113
+                             + Bt->blk[2][0].m[0][2] * t114 + t85 * Bt->blk[2][0].m[0][0]
+                             + t92 * Bt->blk[2][0].m[0][1] + t99 * Bt->blk[2][0].m[0][2];
     S->e[39] = t139;
-    const se23_real_t t140 = b20_00 * t110 + b20_01 * t111 + b20_02 * t112 + t46 * b20_10
-                             + t53 * b20_11 + t60 * b20_12;
+    const se23_real_t t140 = Bt->blk[2][0].m[0][0] * t116 + Bt->blk[2][0].m[0][1] * t117
+                             + Bt->blk[2][0].m[0][2] * t118 + t85 * Bt->blk[2][0].m[1][0]
+                             + t92 * Bt->blk[2][0].m[1][1] + t99 * Bt->blk[2][0].m[1][2];
     S->e[40] = t140;
-    const se23_real_t t141 = b20_00 * t114 + b20_01 * t115 + b20_02 * t116 + t46 * b20_20
-                             + t53 * b20_21 + t60 * b20_22;
+    const se23_real_t t141 = Bt->blk[2][0].m[0][0] * t120 + Bt->blk[2][0].m[0][1] * t121
+                             + Bt->blk[2][0].m[0][2] * t122 + t85 * Bt->blk[2][0].m[2][0]
+                             + t92 * Bt->blk[2][0].m[2][1] + t99 * Bt->blk[2][0].m[2][2];
     S->e[41] = t141;
-    const se23_real_t t142 = b20_10 * t110 + b20_11 * t111 + b20_12 * t112 + t48 * b20_10
-                             + t55 * b20_11 + t62 * b20_12;
+    const se23_real_t t142 = Bt->blk[2][0].m[1][0] * t116 + Bt->blk[2][0].m[1][1] * t117
+                             + Bt->blk[2][0].m[1][2] * t118 + t87 * Bt->blk[2][0].m[1][0]
+                             + t94 * Bt->blk[2][0].m[1][1] + t101 * Bt->blk[2][0].m[1][2];
     S->e[42] = t142;
-    const se23_real_t t143 = b20_10 * t114 + b20_11 * t115 + b20_12 * t116 + t48 * b20_20
-                             + t55 * b20_21 + t62 * b20_22;
+    const se23_real_t t143 = Bt->blk[2][0].m[1][0] * t120 + Bt->blk[2][0].m[1][1] * t121
+                             + Bt->blk[2][0].m[1][2] * t122 + t87 * Bt->blk[2][0].m[2][0]
+                             + t94 * Bt->blk[2][0].m[2][1] + t101 * Bt->blk[2][0].m[2][2];
     S->e[43] = t143;
-    const se23_real_t t144 = b20_20 * t114 + b20_21 * t115 + b20_22 * t116 + t50 * b20_20
-                             + t57 * b20_21 + t64 * b20_22;
+    const se23_real_t t144 = Bt->blk[2][0].m[2][0] * t120 + Bt->blk[2][0].m[2][1] * t121
+                             + Bt->blk[2][0].m[2][2] * t122 + t89 * Bt->blk[2][0].m[2][0]
+                             + t96 * Bt->blk[2][0].m[2][1] + t103 * Bt->blk[2][0].m[2][2];
     S->e[44] = t144;
 }
 
-/* 15 states, second stage: the accel-bias cross blocks, the bias block, S
- * += E's accel terms: 459 multiplies and 438 adds (fused into
- * multiply-adds where the target has them); reads 48 entries of P, stores
- * 90. */
+/* 15 states, second stage: the accel-bias cross blocks, S += E's accel
+ * terms: 459 multiplies and 432 adds (fused into multiply-adds where the
+ * target has them); reads 42 entries of P, stores 54. */
 void se23_cov_step15_accel(const se23_pose_t *U, se23_real_t dt, const se23_input_blocks_t *Bt,
                            const se23_step_noise_t *q, const se23_real_t *P, se23_real_t *out,
                            int stride, se23_cov_pose_t *S)
 {
     const se23_real_t p0_12 = P[12];
-    const se23_real_t p9_12 = P[(stride * 9) + 12];
-    const se23_real_t p10_12 = P[(stride * 10) + 12];
-    const se23_real_t p11_12 = P[(stride * 11) + 12];
-    const se23_real_t b00_00 = Bt->blk[0][0].m[0][0];
-    const se23_real_t b00_01 = Bt->blk[0][0].m[0][1];
-    const se23_real_t b00_02 = Bt->blk[0][0].m[0][2];
-    const se23_real_t t1 = p0_12 + b00_00 * p9_12 + b00_01 * p10_12 + b00_02 * p11_12;
+    const se23_real_t t1 = p0_12 + Bt->blk[0][0].m[0][0] * P[(stride * 9) + 12]
+                           + Bt->blk[0][0].m[0][1] * P[(stride * 10) + 12]
+                           + Bt->blk[0][0].m[0][2] * P[(stride * 11) + 12];
     const se23_real_t p1_12 = P[stride + 12];
-    const se23_real_t b00_10 = Bt->blk[0][0].m[1][0];
-    const se23_real_t b00_11 = Bt->blk[0][0].m[1][1];
-    const se23_real_t b00_12 = Bt->blk[0][0].m[1][2];
-    const se23_real_t t2 = p1_12 + b00_10 * p9_12 + b00_11 * p10_12 + b00_12 * p11_12;
+    const se23_real_t t2 = p1_12 + Bt->blk[0][0].m[1][0] * P[(stride * 9) + 12]
+                           + Bt->blk[0][0].m[1][1] * P[(stride * 10) + 12]
+                           + Bt->blk[0][0].m[1][2] * P[(stride * 11) + 12];
     const se23_real_t p2_12 = P[(stride * 2) + 12];
-    const se23_real_t b00_20 = Bt->blk[0][0].m[2][0];
-    const se23_real_t b00_21 = Bt->blk[0][0].m[2][1];
-    const se23_real_t b00_22 = Bt->blk[0][0].m[2][2];
-    const se23_real_t t3 = p2_12 + b00_20 * p9_12 + b00_21 * p10_12 + b00_22 * p11_12;
-    const se23_real_t r00 = U->R.m[0][0];
-    const se23_real_t r10 = U->R.m[1][0];
-    const se23_real_t r20 = U->R.m[2][0];
-    const se23_real_t t4 = r00 * t1 + r10 * t2 + r20 * t3;
+    const se23_real_t t3 = p2_12 + Bt->blk[0][0].m[2][0] * P[(stride * 9) + 12]
+                           + Bt->blk[0][0].m[2][1] * P[(stride * 10) + 12]
+                           + Bt->blk[0][0].m[2][2] * P[(stride * 11) + 12];
+    const se23_real_t t4 = U->R.m[0][0] * t1 + U->R.m[1][0] * t2 + U->R.m[2][0] * t3;
     const se23_real_t p0_13 = P[13];
-    const se23_real_t p9_13 = P[(stride * 9) + 13];
-    const se23_real_t p10_13 = P[(stride * 10) + 13];
-    const se23_real_t p11_13 = P[(stride * 11) + 13];
-    const se23_real_t t5 = p0_13 + b00_00 * p9_13 + b00_01 * p10_13 + b00_02 * p11_13;
+    const se23_real_t t5 = p0_13 + Bt->blk[0][0].m[0][0] * P[(stride * 9) + 13]
+                           + Bt->blk[0][0].m[0][1] * P[(stride * 10) + 13]
+                           + Bt->blk[0][0].m[0][2] * P[(stride * 11) + 13];
     out[12] = t4;
     out[(stride * 12)] = t4;
     const se23_real_t p1_13 = P[stride + 13];
-    const se23_real_t t6 = p1_13 + b00_10 * p9_13 + b00_11 * p10_13 + b00_12 * p11_13;
+    const se23_real_t t6 = p1_13 + Bt->blk[0][0].m[1][0] * P[(stride * 9) + 13]
+                           + Bt->blk[0][0].m[1][1] * P[(stride * 10) + 13]
+                           + Bt->blk[0][0].m[1][2] * P[(stride * 11) + 13];
     const se23_real_t p2_13 = P[(stride * 2) + 13];
-    const se23_real_t t7 = p2_13 + b00_20 * p9_13 + b00_21 * p10_13 + b00_22 * p11_13;
-    const se23_real_t t8 = r00 * t5 + r10 * t6 + r20 * t7;
+    const se23_real_t t7 = p2_13 + Bt->blk[0][0].m[2][0] * P[(stride * 9) + 13]
+                           + Bt->blk[0][0].m[2][1] * P[(stride * 10) + 13]
+                           + Bt->blk[0][0].m[2][2] * P[(stride * 11) + 13];
+    const se23_real_t t8 = U->R.m[0][0] * t5 + U->R.m[1][0] * t6 + U->R.m[2][0] * t7;
     const se23_real_t p0_14 = P[14];
-    const se23_real_t p9_14 = P[(stride * 9) + 14];
-    const se23_real_t p10_14 = P[(stride * 10) + 14];
-    const se23_real_t p11_14 = P[(stride * 11) + 14];
-    const se23_real_t t9 = p0_14 + b00_00 * p9_14 + b00_01 * p10_14 + b00_02 * p11_14;
+    const se23_real_t t9 = p0_14 + Bt->blk[0][0].m[0][0] * P[(stride * 9) + 14]
+                           + Bt->blk[0][0].m[0][1] * P[(stride * 10) + 14]
+                           + Bt->blk[0][0].m[0][2] * P[(stride * 11) + 14];
     out[13] = t8;
     out[(stride * 13)] = t8;
     const se23_real_t p1_14 = P[stride + 14];
-    const se23_real_t t10 = p1_14 + b00_10 * p9_14 + b00_11 * p10_14 + b00_12 * p11_14;
+    const se23_real_t t10 = p1_14 + Bt->blk[0][0].m[1][0] * P[(stride * 9) + 14]
+                            + Bt->blk[0][0].m[1][1] * P[(stride * 10) + 14]
+                            + Bt->blk[0][0].m[1][2] * P[(stride * 11) + 14];
     const se23_real_t p2_14 = P[(stride * 2) + 14];
-    const se23_real_t t11 = p2_14 + b00_20 * p9_14 + b00_21 * p10_14 + b00_22 * p11_14;
-    const se23_real_t t12 = r00 * t9 + r10 * t10 + r20 * t11;
-    const se23_real_t r01 = U->R.m[0][1];
-    const se23_real_t r11 = U->R.m[1][1];
-    const se23_real_t r21 = U->R.m[2][1];
-    const se23_real_t t13 = r01 * t1 + r11 * t2 + r21 * t3;
+    const se23_real_t t11 = p2_14 + Bt->blk[0][0].m[2][0] * P[(stride * 9) + 14]
+                            + Bt->blk[0][0].m[2][1] * P[(stride * 10) + 14]
+                            + Bt->blk[0][0].m[2][2] * P[(stride * 11) + 14];
+    const se23_real_t t12 = U->R.m[0][0] * t9 + U->R.m[1][0] * t10 + U->R.m[2][0] * t11;
+    const se23_real_t t13 = U->R.m[0][1] * t1 + U->R.m[1][1] * t2 + U->R.m[2][1] * t3;
     out[14] = t12;
     out[(stride * 14)] = t12;
-    const se23_real_t t14 = r01 * t5 + r11 * t6 + r21 * t7;
+    const se23_real_t t14 = U->R.m[0][1] * t5 + U->R.m[1][1] * t6 + U->R.m[2][1] * t7;
     out[stride + 12] = t13;
     out[(stride * 12) + 1] = t13;
-    const se23_real_t t15 = r01 * t9 + r11 * t10 + r21 * t11;
+    const se23_real_t t15 = U->R.m[0][1] * t9 + U->R.m[1][1] * t10 + U->R.m[2][1] * t11;
     out[stride + 13] = t14;
     out[(stride * 13) + 1] = t14;
-    const se23_real_t r02 = U->R.m[0][2];
-    const se23_real_t r12 = U->R.m[1][2];
-    const se23_real_t r22 = U->R.m[2][2];
-    const se23_real_t t16 = r02 * t1 + r12 * t2 + r22 * t3;
+    const se23_real_t t16 = U->R.m[0][2] * t1 + U->R.m[1][2] * t2 + U->R.m[2][2] * t3;
     out[stride + 14] = t15;
     out[(stride * 14) + 1] = t15;
-    const se23_real_t t17 = r02 * t5 + r12 * t6 + r22 * t7;
+    const se23_real_t t17 = U->R.m[0][2] * t5 + U->R.m[1][2] * t6 + U->R.m[2][2] * t7;
     out[(stride * 2) + 12] = t16;
     out[(stride * 12) + 2] = t16;
-    const se23_real_t t18 = r02 * t9 + r12 * t10 + r22 * t11;
+    const se23_real_t t18 = U->R.m[0][2] * t9 + U->R.m[1][2] * t10 + U->R.m[2][2] * t11;
     out[(stride * 2) + 13] = t17;
     out[(stride * 13) + 2] = t17;
     out[(stride * 2) + 14] = t18;
     out[(stride * 14) + 2] = t18;
     const se23_real_t p3_12 = P[(stride * 3) + 12];
-    const se23_real_t vel2 = U->v.v[2];
-    const se23_real_t vel1 = U->v.v[1];
-    const se23_real_t t19 = p3_12 + vel2 * p1_12 - vel1 * p2_12;
-    const se23_real_t p12_12 = P[(stride * 12) + 12];
-    const se23_real_t p12_13 = P[(stride * 12) + 13];
-    const se23_real_t p12_14 = P[(stride * 12) + 14];
-    const se23_real_t b10_00 = Bt->blk[1][0].m[0][0];
-    const se23_real_t b10_01 = Bt->blk[1][0].m[0][1];
-    const se23_real_t b10_02 = Bt->blk[1][0].m[0][2];
-    const se23_real_t b11_00 = Bt->blk[1][1].m[0][0];
-    const se23_real_t b11_01 = Bt->blk[1][1].m[0][1];
-    const se23_real_t b11_02 = Bt->blk[1][1].m[0][2];
-    const se23_real_t t20 = t19 + b10_00 * p9_12 + b10_01 * p10_12 + b10_02 * p11_12
-                            + b11_00 * p12_12 + b11_01 * p12_13 + b11_02 * p12_14;
+    const se23_real_t t19 = p3_12 + U->v.v[2] * p1_12 - U->v.v[1] * p2_12;
+    const se23_real_t t20 = t19 + Bt->blk[1][0].m[0][0] * P[(stride * 9) + 12]
+                            + Bt->blk[1][0].m[0][1] * P[(stride * 10) + 12]
+                            + Bt->blk[1][0].m[0][2] * P[(stride * 11) + 12]
+                            + Bt->blk[1][1].m[0][0] * P[(stride * 12) + 12]
+                            + Bt->blk[1][1].m[0][1] * P[(stride * 12) + 13]
+                            + Bt->blk[1][1].m[0][2] * P[(stride * 12) + 14];
     const se23_real_t p4_12 = P[(stride * 4) + 12];
-    const se23_real_t vel0 = U->v.v[0];
-    const se23_real_t t21 = p4_12 - vel2 * p0_12 + vel0 * p2_12;
-    const se23_real_t b10_10 = Bt->blk[1][0].m[1][0];
-    const se23_real_t b10_11 = Bt->blk[1][0].m[1][1];
-    const se23_real_t b10_12 = Bt->blk[1][0].m[1][2];
-    const se23_real_t b11_10 = Bt->blk[1][1].m[1][0];
-    const se23_real_t b11_11 = Bt->blk[1][1].m[1][1];
-    const se23_real_t b11_12 = Bt->blk[1][1].m[1][2];
-    const se23_real_t t22 = t21 + b10_10 * p9_12 + b10_11 * p10_12 + b10_12 * p11_12
-                            + b11_10 * p12_12 + b11_11 * p12_13 + b11_12 * p12_14;
+    const se23_real_t t21 = p4_12 - U->v.v[2] * p0_12 + U->v.v[0] * p2_12;
+    const se23_real_t t22 = t21 + Bt->blk[1][0].m[1][0] * P[(stride * 9) + 12]
+                            + Bt->blk[1][0].m[1][1] * P[(stride * 10) + 12]
+                            + Bt->blk[1][0].m[1][2] * P[(stride * 11) + 12]
+                            + Bt->blk[1][1].m[1][0] * P[(stride * 12) + 12]
+                            + Bt->blk[1][1].m[1][1] * P[(stride * 12) + 13]
+                            + Bt->blk[1][1].m[1][2] * P[(stride * 12) + 14];
     const se23_real_t p5_12 = P[(stride * 5) + 12];
-    const se23_real_t t23 = p5_12 + vel1 * p0_12 - vel0 * p1_12;
-    const se23_real_t b10_20 = Bt->blk[1][0].m[2][0];
-    const se23_real_t b10_21 = Bt->blk[1][0].m[2][1];
-    const se23_real_t b10_22 = Bt->blk[1][0].m[2][2];
-    const se23_real_t b11_20 = Bt->blk[1][1].m[2][0];
-    const se23_real_t b11_21 = Bt->blk[1][1].m[2][1];
-    const se23_real_t b11_22 = Bt->blk[1][1].m[2][2];
-    const se23_real_t t24 = t23 + b10_20 * p9_12 + b10_21 * p10_12 + b10_22 * p11_12
-                            + b11_20 * p12_12 + b11_21 * p12_13 + b11_22 * p12_14;
-    const se23_real_t t25 = r00 * t20 + r10 * t22 + r20 * t24;
+    const se23_real_t t23 = p5_12 + U->v.v[1] * p0_12 - U->v.v[0] * p1_12;
+    const se23_real_t t24 = t23 + Bt->blk[1][0].m[2][0] * P[(stride * 9) + 12]
+                            + Bt->blk[1][0].m[2][1] * P[(stride * 10) + 12]
+                            + Bt->blk[1][0].m[2][2] * P[(stride * 11) + 12]
+                            + Bt->blk[1][1].m[2][0] * P[(stride * 12) + 12]
+                            + Bt->blk[1][1].m[2][1] * P[(stride * 12) + 13]
+                            + Bt->blk[1][1].m[2][2] * P[(stride * 12) + 14];
+    const se23_real_t t25 = U->R.m[0][0] * t20 + U->R.m[1][0] * t22 + U->R.m[2][0] * t24;
     const se23_real_t p3_13 = P[(stride * 3) + 13];
-    const se23_real_t t26 = p3_13 + vel2 * p1_13 - vel1 * p2_13;
+    const se23_real_t t26 = p3_13 + U->v.v[2] * p1_13 - U->v.v[1] * p2_13;
     out[(stride * 3) + 12] = t25;
     out[(stride * 12) + 3] = t25;
-    const se23_real_t p13_13 = P[(stride * 13) + 13];
-    const se23_real_t p13_14 = P[(stride * 13) + 14];
-    const se23_real_t t27 = t26 + b10_00 * p9_13 + b10_01 * p10_13 + b10_02 * p11_13
-                            + b11_00 * p12_13 + b11_01 * p13_13 + b11_02 * p13_14;
+    const se23_real_t t27 = t26 + Bt->blk[1][0].m[0][0] * P[(stride * 9) + 13]
+                            + Bt->blk[1][0].m[0][1] * P[(stride * 10) + 13]
+                            + Bt->blk[1][0].m[0][2] * P[(stride * 11) + 13]
+                            + Bt->blk[1][1].m[0][0] * P[(stride * 12) + 13]
+                            + Bt->blk[1][1].m[0][1] * P[(stride * 13) + 13]
+                            + Bt->blk[1][1].m[0][2] * P[(stride * 13) + 14];
     const se23_real_t p4_13 = P[(stride * 4) + 13];
-    const se23_real_t t28 = p4_13 - vel2 * p0_13 + vel0 * p2_13;
-    const se23_real_t t29 = t28 + b10_10 * p9_13 + b10_11 * p10_13 + b10_12 * p11_13
-                            + b11_10 * p12_13 + b11_11 * p13_13 + b11_12 * p13_14;
+    const se23_real_t t28 = p4_13 - U->v.v[2] * p0_13 + U->v.v[0] * p2_13;
+    const se23_real_t t29 = t28 + Bt->blk[1][0].m[1][0] * P[(stride * 9) + 13]
+                            + Bt->blk[1][0].m[1][1] * P[(stride * 10) + 13]
+                            + Bt->blk[1][0].m[1][2] * P[(stride * 11) + 13]
+                            + Bt->blk[1][1].m[1][0] * P[(stride * 12) + 13]
+                            + Bt->blk[1][1].m[1][1] * P[(stride * 13) + 13]
+                            + Bt->blk[1][1].m[1][2] * P[(stride * 13) + 14];
     const se23_real_t p5_13 = P[(stride * 5) + 13];
-    const se23_real_t t30 = p5_13 + vel1 * p0_13 - vel0 * p1_13;
-    const se23_real_t t31 = t30 + b10_20 * p9_13 + b10_21 * p10_13 + b10_22 * p11_13
-                            + b11_20 * p12_13 + b11_21 * p13_13 + b11_22 * p13_14;
-    const se23_real_t t32 = r00 * t27 + r10 * t29 + r20 * t31;
+    const se23_real_t t30 = p5_13 + U->v.v[1] * p0_13 - U->v.v[0] * p1_13;
+    const se23_real_t t31 = t30 + Bt->blk[1][0].m[2][0] * P[(stride * 9) + 13]
+                            + Bt->blk[1][0].m[2][1] * P[(stride * 10) + 13]
+                            + Bt->blk[1][0].m[2][2] * P[(stride * 11) + 13]
+                            + Bt->blk[1][1].m[2][0] * P[(stride * 12) + 13]
+                            + Bt->blk[1][1].m[2][1] * P[(stride * 13) + 13]
+                            + Bt->blk[1][1].m[2][2] * P[(stride * 13) + 14];
+    const se23_real_t t32 = U->R.m[0][0] * t27 + U->R.m[1][0] * t29 + U->R.m[2][0] * t31;
     const se23_real_t p3_14 = P[(stride * 3) + 14];
-    const se23_real_t t33 = p3_14 + vel2 * p1_14 - vel1 * p2_14;
+    const se23_real_t t33 = p3_14 + U->v.v[2] * p1_14 - U->v.v[1] * p2_14;
     out[(stride * 3) + 13] = t32;
     out[(stride * 13) + 3] = t32;
-    const se23_real_t p14_14 = P[(stride * 14) + 14];
-    const se23_real_t t34 = t33 + b10_00 * p9_14 + b10_01 * p10_14 + b10_02 * p11_14
-                            + b11_00 * p12_14 + b11_01 * p13_14 + b11_02 * p14_14;
+    const se23_real_t t34 = t33 + Bt->blk[1][0].m[0][0] * P[(stride * 9) + 14]
+                            + Bt->blk[1][0].m[0][1] * P[(stride * 10) + 14]
+                            + Bt->blk[1][0].m[0][2] * P[(stride * 11) + 14]
+                            + Bt->blk[1][1].m[0][0] * P[(stride * 12) + 14]
+                            + Bt->blk[1][1].m[0][1] * P[(stride * 13) + 14]
+                            + Bt->blk[1][1].m[0][2] * P[(stride * 14) + 14];
     const se23_real_t p4_14 = P[(stride * 4) + 14];
-    const se23_real_t t35 = p4_14 - vel2 * p0_14 + vel0 * p2_14;
-    const se23_real_t t36 = t35 + b10_10 * p9_14 + b10_11 * p10_14 + b10_12 * p11_14
-                            + b11_10 * p12_14 + b11_11 * p13_14 + b11_12 * p14_14;
+    const se23_real_t t35 = p4_14 - U->v.v[2] * p0_14 + U->v.v[0] * p2_14;
+    const se23_real_t t36 = t35 + Bt->blk[1][0].m[1][0] * P[(stride * 9) + 14]
+                            + Bt->blk[1][0].m[1][1] * P[(stride * 10) + 14]
+                            + Bt->blk[1][0].m[1][2] * P[(stride * 11) + 14]
+                            + Bt->blk[1][1].m[1][0] * P[(stride * 12) + 14]
+                            + Bt->blk[1][1].m[1][1] * P[(stride * 13) + 14]
+                            + Bt->blk[1][1].m[1][2] * P[(stride * 14) + 14];
     const se23_real_t p5_14 = P[(stride * 5) + 14];
-    const se23_real_t t37 = p5_14 + vel1 * p0_14 - vel0 * p1_14;
-    const se23_real_t t38 = t37 + b10_20 * p9_14 + b10_21 * p10_14 + b10_22 * p11_14
-                            + b11_20 * p12_14 + b11_21 * p13_14 + b11_22 * p14_14;
-    const se23_real_t t39 = r00 * t34 + r10 * t36 + r20 * t38;
-    const se23_real_t t40 = r01 * t20 + r11 * t22 + r21 * t24;
+    const se23_real_t t37 = p5_14 + U->v.v[1] * p0_14 - U->v.v[0] * p1_14;
+    const se23_real_t t38 = t37 + Bt->blk[1][0].m[2][0] * P[(stride * 9) + 14]
+                            + Bt->blk[1][0].m[2][1] * P[(stride * 10) + 14]
+                            + Bt->blk[1][0].m[2][2] * P[(stride * 11) + 14]
+                            + Bt->blk[1][1].m[2][0] * P[(stride * 12) + 14]
+                            + Bt->blk[1][1].m[2][1] * P[(stride * 13) + 14]
+                            + Bt->blk[1][1].m[2][2] * P[(stride * 14) + 14];
+    const se23_real_t t39 = U->R.m[0][0] * t34 + U->R.m[1][0] * t36 + U->R.m[2][0] * t38;
+    const se23_real_t t40 = U->R.m[0][1] * t20 + U->R.m[1][1] * t22 + U->R.m[2][1] * t24;
     out[(stride * 3) + 14] = t39;
     out[(stride * 14) + 3] = t39;
-    const se23_real_t t41 = r01 * t27 + r11 * t29 + r21 * t31;
+    const se23_real_t t41 = U->R.m[0][1] * t27 + U->R.m[1][1] * t29 + U->R.m[2][1] * t31;
     out[(stride * 4) + 12] = t40;
     out[(stride * 12) + 4] = t40;
-    const se23_real_t t42 = r01 * t34 + r11 * t36 + r21 * t38;
+    const se23_real_t t42 = U->R.m[0][1] * t34 + U->R.m[1][1] * t36 + U->R.m[2][1] * t38;
     out[(stride * 4) + 13] = t41;
     out[(stride * 13) + 4] = t41;
-    const se23_real_t t43 = r02 * t20 + r12 * t22 + r22 * t24;
+    const se23_real_t t43 = U->R.m[0][2] * t20 + U->R.m[1][2] * t22 + U->R.m[2][2] * t24;
     out[(stride * 4) + 14] = t42;
     out[(stride * 14) + 4] = t42;
-    const se23_real_t t44 = r02 * t27 + r12 * t29 + r22 * t31;
+    const se23_real_t t44 = U->R.m[0][2] * t27 + U->R.m[1][2] * t29 + U->R.m[2][2] * t31;
     out[(stride * 5) + 12] = t43;
     out[(stride * 12) + 5] = t43;
-    const se23_real_t t45 = r02 * t34 + r12 * t36 + r22 * t38;
+    const se23_real_t t45 = U->R.m[0][2] * t34 + U->R.m[1][2] * t36 + U->R.m[2][2] * t38;
     out[(stride * 5) + 13] = t44;
     out[(stride * 13) + 5] = t44;
     out[(stride * 5) + 14] = t45;
     out[(stride * 14) + 5] = t45;
+    const se23_real_t t46 = S->e[6] + p0_12 * Bt->blk[1][1].m[0][0]
+                            + p0_13 * Bt->blk[1][1].m[0][1] + p0_14 * Bt->blk[1][1].m[0][2];
+    S->e[6] = t46;
+    const se23_real_t t47 = S->e[7] + p0_12 * Bt->blk[1][1].m[1][0]
+                            + p0_13 * Bt->blk[1][1].m[1][1] + p0_14 * Bt->blk[1][1].m[1][2];
+    S->e[7] = t47;
+    const se23_real_t t48 = S->e[8] + p0_12 * Bt->blk[1][1].m[2][0]
+                            + p0_13 * Bt->blk[1][1].m[2][1] + p0_14 * Bt->blk[1][1].m[2][2];
+    S->e[8] = t48;
+    const se23_real_t t49 = S->e[9] + p1_12 * Bt->blk[1][1].m[0][0]
+                            + p1_13 * Bt->blk[1][1].m[0][1] + p1_14 * Bt->blk[1][1].m[0][2];
+    S->e[9] = t49;
+    const se23_real_t t50 = S->e[10] + p1_12 * Bt->blk[1][1].m[1][0]
+                            + p1_13 * Bt->blk[1][1].m[1][1] + p1_14 * Bt->blk[1][1].m[1][2];
+    S->e[10] = t50;
+    const se23_real_t t51 = S->e[11] + p1_12 * Bt->blk[1][1].m[2][0]
+                            + p1_13 * Bt->blk[1][1].m[2][1] + p1_14 * Bt->blk[1][1].m[2][2];
+    S->e[11] = t51;
+    const se23_real_t t52 = S->e[12] + p2_12 * Bt->blk[1][1].m[0][0]
+                            + p2_13 * Bt->blk[1][1].m[0][1] + p2_14 * Bt->blk[1][1].m[0][2];
+    S->e[12] = t52;
+    const se23_real_t t53 = S->e[13] + p2_12 * Bt->blk[1][1].m[1][0]
+                            + p2_13 * Bt->blk[1][1].m[1][1] + p2_14 * Bt->blk[1][1].m[1][2];
+    S->e[13] = t53;
+    const se23_real_t t54 = S->e[14] + p2_12 * Bt->blk[1][1].m[2][0]
+                            + p2_13 * Bt->blk[1][1].m[2][1] + p2_14 * Bt->blk[1][1].m[2][2];
+    S->e[14] = t54;
+    const se23_real_t t55 = t20 + q->qa * Bt->blk[1][1].m[0][0];
+    const se23_real_t t56 = t27 + q->qa * Bt->blk[1][1].m[0][1];
+    const se23_real_t t57 = t34 + q->qa * Bt->blk[1][1].m[0][2];
+    const se23_real_t t58 = S->e[24] + Bt->blk[1][1].m[0][0] * t55 + Bt->blk[1][1].m[0][1] * t56
+                            + Bt->blk[1][1].m[0][2] * t57 + t19 * Bt->blk[1][1].m[0][0]
+                            + t26 * Bt->blk[1][1].m[0][1] + t33 * Bt->blk[1][1].m[0][2];
+    S->e[24] = t58;
+    const se23_real_t t59 = t22 + q->qa * Bt->blk[1][1].m[1][0];
+    const se23_real_t t60 = t29 + q->qa * Bt->blk[1][1].m[1][1];
+    const se23_real_t t61 = t36 + q->qa * Bt->blk[1][1].m[1][2];
+    const se23_real_t t62 = S->e[25] + Bt->blk[1][1].m[0][0] * t59 + Bt->blk[1][1].m[0][1] * t60
+                            + Bt->blk[1][1].m[0][2] * t61 + t19 * Bt->blk[1][1].m[1][0]
+                            + t26 * Bt->blk[1][1].m[1][1] + t33 * Bt->blk[1][1].m[1][2];
+    S->e[25] = t62;
+    const se23_real_t t63 = t24 + q->qa * Bt->blk[1][1].m[2][0];
+    const se23_real_t t64 = t31 + q->qa * Bt->blk[1][1].m[2][1];
+    const se23_real_t t65 = t38 + q->qa * Bt->blk[1][1].m[2][2];
+    const se23_real_t t66 = S->e[26] + Bt->blk[1][1].m[0][0] * t63 + Bt->blk[1][1].m[0][1] * t64
+                            + Bt->blk[1][1].m[0][2] * t65 + t19 * Bt->blk[1][1].m[2][0]
+                            + t26 * Bt->blk[1][1].m[2][1] + t33 * Bt->blk[1][1].m[2][2];
+    S->e[26] = t66;
+    const se23_real_t t67 = S->e[27] + Bt->blk[1][1].m[1][0] * t59 + Bt->blk[1][1].m[1][1] * t60
+                            + Bt->blk[1][1].m[1][2] * t61 + t21 * Bt->blk[1][1].m[1][0]
+                            + t28 * Bt->blk[1][1].m[1][1] + t35 * Bt->blk[1][1].m[1][2];
+    S->e[27] = t67;
+    const se23_real_t t68 = S->e[28] + Bt->blk[1][1].m[1][0] * t63 + Bt->blk[1][1].m[1][1] * t64
+                            + Bt->blk[1][1].m[1][2] * t65 + t21 * Bt->blk[1][1].m[2][0]
+                            + t28 * Bt->blk[1][1].m[2][1] + t35 * Bt->blk[1][1].m[2][2];
+    S->e[28] = t68;
+    const se23_real_t t69 = S->e[29] + Bt->blk[1][1].m[2][0] * t63 + Bt->blk[1][1].m[2][1] * t64
+                            + Bt->blk[1][1].m[2][2] * t65 + t23 * Bt->blk[1][1].m[2][0]
+                            + t30 * Bt->blk[1][1].m[2][1] + t37 * Bt->blk[1][1].m[2][2];
+    S->e[29] = t69;
     const se23_real_t p6_12 = P[(stride * 6) + 12];
-    const se23_real_t pos2 = U->p.v[2];
-    const se23_real_t pos1 = U->p.v[1];
-    const se23_real_t t46 = p6_12 + dt * p3_12 + pos2 * p1_12 - pos1 * p2_12;
-    const se23_real_t b20_00 = Bt->blk[2][0].m[0][0];
-    const se23_real_t b20_01 = Bt->blk[2][0].m[0][1];
-    const se23_real_t b20_02 = Bt->blk[2][0].m[0][2];
-    const se23_real_t b21_00 = Bt->blk[2][1].m[0][0];
-    const se23_real_t b21_01 = Bt->blk[2][1].m[0][1];
-    const se23_real_t b21_02 = Bt->blk[2][1].m[0][2];
-    const se23_real_t t47 = t46 + b20_00 * p9_12 + b20_01 * p10_12 + b20_02 * p11_12
-                            + b21_00 * p12_12 + b21_01 * p12_13 + b21_02 * p12_14;
+    const se23_real_t t70 = p6_12 + dt * p3_12 + U->p.v[2] * p1_12 - U->p.v[1] * p2_12;
+    const se23_real_t t71 = t70 + Bt->blk[2][0].m[0][0] * P[(stride * 9) + 12]
+                            + Bt->blk[2][0].m[0][1] * P[(stride * 10) + 12]
+                            + Bt->blk[2][0].m[0][2] * P[(stride * 11) + 12]
+                            + Bt->blk[2][1].m[0][0] * P[(stride * 12) + 12]
+                            + Bt->blk[2][1].m[0][1] * P[(stride * 12) + 13]
+                            + Bt->blk[2][1].m[0][2] * P[(stride * 12) + 14];
     const se23_real_t p7_12 = P[(stride * 7) + 12];
-    const se23_real_t pos0 = U->p.v[0];
-    const se23_real_t t48 = p7_12 + dt * p4_12 - pos2 * p0_12 + pos0 * p2_12;
-    const se23_real_t b20_10 = Bt->blk[2][0].m[1][0];
-    const se23_real_t b20_11 = Bt->blk[2][0].m[1][1];
-    const se23_real_t b20_12 = Bt->blk[2][0].m[1][2];
-    const se23_real_t b21_10 = Bt->blk[2][1].m[1][0];
-    const se23_real_t b21_11 = Bt->blk[2][1].m[1][1];
-    const se23_real_t b21_12 = Bt->blk[2][1].m[1][2];
-    const se23_real_t t49 = t48 + b20_10 * p9_12 + b20_11 * p10_12 + b20_12 * p11_12
-                            + b21_10 * p12_12 + b21_11 * p12_13 + b21_12 * p12_14;
+    const se23_real_t t72 = p7_12 + dt * p4_12 - U->p.v[2] * p0_12 + U->p.v[0] * p2_12;
+    const se23_real_t t73 = t72 + Bt->blk[2][0].m[1][0] * P[(stride * 9) + 12]
+                            + Bt->blk[2][0].m[1][1] * P[(stride * 10) + 12]
+                            + Bt->blk[2][0].m[1][2] * P[(stride * 11) + 12]
+                            + Bt->blk[2][1].m[1][0] * P[(stride * 12) + 12]
+                            + Bt->blk[2][1].m[1][1] * P[(stride * 12) + 13]
+                            + Bt->blk[2][1].m[1][2] * P[(stride * 12) + 14];
     const se23_real_t p8_12 = P[(stride * 8) + 12];
-    const se23_real_t t50 = p8_12 + dt * p5_12 + pos1 * p0_12 - pos0 * p1_12;
-    const se23_real_t b20_20 = Bt->blk[2][0].m[2][0];
-    const se23_real_t b20_21 = Bt->blk[2][0].m[2][1];
-    const se23_real_t b20_22 = Bt->blk[2][0].m[2][2];
-    const se23_real_t b21_20 = Bt->blk[2][1].m[2][0];
-    const se23_real_t b21_21 = Bt->blk[2][1].m[2][1];
-    const se23_real_t b21_22 = Bt->blk[2][1].m[2][2];
-    const se23_real_t t51 = t50 + b20_20 * p9_12 + b20_21 * p10_12 + b20_22 * p11_12
-                            + b21_20 * p12_12 + b21_21 * p12_13 + b21_22 * p12_14;
-    const se23_real_t t52 = r00 * t47 + r10 * t49 + r20 * t51;
+    const se23_real_t t74 = p8_12 + dt * p5_12 + U->p.v[1] * p0_12 - U->p.v[0] * p1_12;
+    const se23_real_t t75 = t74 + Bt->blk[2][0].m[2][0] * P[(stride * 9) + 12]
+                            + Bt->blk[2][0].m[2][1] * P[(stride * 10) + 12]
+                            + Bt->blk[2][0].m[2][2] * P[(stride * 11) + 12]
+                            + Bt->blk[2][1].m[2][0] * P[(stride * 12) + 12]
+                            + Bt->blk[2][1].m[2][1] * P[(stride * 12) + 13]
+                            + Bt->blk[2][1].m[2][2] * P[(stride * 12) + 14];
+    const se23_real_t t76 = U->R.m[0][0] * t71 + U->R.m[1][0] * t73 + U->R.m[2][0] * t75;
     const se23_real_t p6_13 = P[(stride * 6) + 13];
-    const se23_real_t t53 = p6_13 + dt * p3_13 + pos2 * p1_13 - pos1 * p2_13;
-    out[(stride * 6) + 12] = t52;
-    out[(stride * 12) + 6] = t52;
-    const se23_real_t t54 = t53 + b20_00 * p9_13 + b20_01 * p10_13 + b20_02 * p11_13
-                            + b21_00 * p12_13 + b21_01 * p13_13 + b21_02 * p13_14;
+    const se23_real_t t77 = p6_13 + dt * p3_13 + U->p.v[2] * p1_13 - U->p.v[1] * p2_13;
+    out[(stride * 6) + 12] = t76;
+    out[(stride * 12) + 6] = t76;
+    const se23_real_t t78 = t77 + Bt->blk[2][0].m[0][0] * P[(stride * 9) + 13]
+                            + Bt->blk[2][0].m[0][1] * P[(stride * 10) + 13]
+                            + Bt->blk[2][0].m[0][2] * P[(stride * 11) + 13]
+                            + Bt->blk[2][1].m[0][0] * P[(stride * 12) + 13]
+                            + Bt->blk[2][1].m[0][1] * P[(stride * 13) + 13]
+                            + Bt->blk[2][1].m[0][2] * P[(stride * 13) + 14];
     const se23_real_t p7_13 = P[(stride * 7) + 13];
-    const se23_real_t t55 = p7_13 + dt * p4_13 - pos2 * p0_13 + pos0 * p2_13;
-    const se23_real_t t56 = t55 + b20_10 * p9_13 + b20_11 * p10_13 + b20_12 * p11_13
-                            + b21_10 * p12_13 + b21_11 * p13_13 + b21_12 * p13_14;
+    const se23_real_t t79 = p7_13 + dt * p4_13 - U->p.v[2] * p0_13 + U->p.v[0] * p2_13;
+    const se23_real_t t80 = t79 + Bt->blk[2][0].m[1][0] * P[(stride * 9) + 13]
+                            + Bt->blk[2][0].m[1][1] * P[(stride * 10) + 13]
+                            + Bt->blk[2][0].m[1][2] * P[(stride * 11) + 13]
+                            + Bt->blk[2][1].m[1][0] * P[(stride * 12) + 13]
+                            + Bt->blk[2][1].m[1][1] * P[(stride * 13) + 13]
+                            + Bt->blk[2][1].m[1][2] * P[(stride * 13) + 14];
     const se23_real_t p8_13 = P[(stride * 8) + 13];
-    const se23_real_t t57 = p8_13 + dt * p5_13 + pos1 * p0_13 - pos0 * p1_13;
-    const se23_real_t t58 = t57 + b20_20 * p9_13 + b20_21 * p10_13 + b20_22 * p11_13
-                            + b21_20 * p12_13 + b21_21 * p13_13 + b21_22 * p13_14;
-    const se23_real_t t59 = r00 * t54 + r10 * t56 + r20 * t58;
+    const se23_real_t t81 = p8_13 + dt * p5_13 + U->p.v[1] * p0_13 - U->p.v[0] * p1_13;
+    const se23_real_t t82 = t81 + Bt->blk[2][0].m[2][0] * P[(stride * 9) + 13]
+                            + Bt->blk[2][0].m[2][1] * P[(stride * 10) + 13]
+                            + Bt->blk[2][0].m[2][2] * P[(stride * 11) + 13]
+                            + Bt->blk[2][1].m[2][0] * P[(stride * 12) + 13]
+                            + Bt->blk[2][1].m[2][1] * P[(stride * 13) + 13]
+                            + Bt->blk[2][1].m[2][2] * P[(stride * 13) + 14];
+    const se23_real_t t83 = U->R.m[0][0] * t78 + U->R.m[1][0] * t80 + U->R.m[2][0] * t82;
     const se23_real_t p6_14 = P[(stride * 6) + 14];
-    const se23_real_t t60 = p6_14 + dt * p3_14 + pos2 * p1_14 - pos1 * p2_14;
-    out[(stride * 6) + 13] = t59;
-    out[(stride * 13) + 6] = t59;
-    const se23_real_t t61 = t60 + b20_00 * p9_14 + b20_01 * p10_14 + b20_02 * p11_14
-                            + b21_00 * p12_14 + b21_01 * p13_14 + b21_02 * p14_14;
+    const se23_real_t t84 = p6_14 + dt * p3_14 + U->p.v[2] * p1_14 - U->p.v[1] * p2_14;
+    out[(stride * 6) + 13] = t83;
+    out[(stride * 13) + 6] = t83;
+    const se23_real_t t85 = t84 + Bt->blk[2][0].m[0][0] * P[(stride * 9) + 14]
+                            + Bt->blk[2][0].m[0][1] * P[(stride * 10) + 14]
+                            + Bt->blk[2][0].m[0][2] * P[(stride * 11) + 14]
+                            + Bt->blk[2][1].m[0][0] * P[(stride * 12) + 14]
+                            + Bt->blk[2][1].m[0][1] * P[(stride * 13) + 14]
+                            + Bt->blk[2][1].m[0][2] * P[(stride * 14) + 14];
     const se23_real_t p7_14 = P[(stride * 7) + 14];
-    const se23_real_t t62 = p7_14 + dt * p4_14 - pos2 * p0_14 + pos0 * p2_14;
-    const se23_real_t t63 = t62 + b20_10 * p9_14 + b20_11 * p10_14 + b20_12 * p11_14
-                            + b21_10 * p12_14 + b21_11 * p13_14 + b21_12 * p14_14;
+    const se23_real_t t86 = p7_14 + dt * p4_14 - U->p.v[2] * p0_14 + U->p.v[0] * p2_14;
+    const se23_real_t t87 = t86 + Bt->blk[2][0].m[1][0] * P[(stride * 9) + 14]
+                            + Bt->blk[2][0].m[1][1] * P[(stride * 10) + 14]
+                            + Bt->blk[2][0].m[1][2] * P[(stride * 11) + 14]
+                            + Bt->blk[2][1].m[1][0] * P[(stride * 12) + 14]
+                            + Bt->blk[2][1].m[1][1] * P[(stride * 13) + 14]
+                            + Bt->blk[2][1].m[1][2] * P[(stride * 14) + 14];
     const se23_real_t p8_14 = P[(stride * 8) + 14];
-    const se23_real_t t64 = p8_14 + dt * p5_14 + pos1 * p0_14 - pos0 * p1_14;
-    const se23_real_t t65 = t64 + b20_20 * p9_14 + b20_21 * p10_14 + b20_22 * p11_14
-                            + b21_20 * p12_14 + b21_21 * p13_14 + b21_22 * p14_14;
-    const se23_real_t t66 = r00 * t61 + r10 * t63 + r20 * t65;
-    const se23_real_t t67 = r01 * t47 + r11 * t49 + r21 * t51;
-    out[(stride * 6) + 14] = t66;
-    out[(stride * 14) + 6] = t66;
-    const se23_real_t t68 = r01 * t54 + r11 * t56 + r21 * t58;
-    out[(stride * 7) + 12] = t67;
-    out[(stride * 12) + 7] = t67;
-    const se23_real_t t69 = r01 * t61 + r11 * t63 + r21 * t65;
-    out[(stride * 7) + 13] = t68;
-    out[(stride * 13) + 7] = t68;
-    const se23_real_t t70 = r02 * t47 + r12 * t49 + r22 * t51;
-    out[(stride * 7) + 14] = t69;
-    out[(stride * 14) + 7] = t69;
-    const se23_real_t t71 = r02 * t54 + r12 * t56 + r22 * t58;
-    out[(stride * 8) + 12] = t70;
-    out[(stride * 12) + 8] = t70;
-    const se23_real_t t72 = r02 * t61 + r12 * t63 + r22 * t65;
-    out[(stride * 8) + 13] = t71;
-    out[(stride * 13) + 8] = t71;
-    out[(stride * 8) + 14] = t72;
-    out[(stride * 14) + 8] = t72;
-    const se23_real_t s01_00 = S->e[6];
-    const se23_real_t t73 = s01_00 + p0_12 * b11_00 + p0_13 * b11_01 + p0_14 * b11_02;
-    S->e[6] = t73;
-    const se23_real_t s01_01 = S->e[7];
-    const se23_real_t t74 = s01_01 + p0_12 * b11_10 + p0_13 * b11_11 + p0_14 * b11_12;
-    S->e[7] = t74;
-    const se23_real_t s01_02 = S->e[8];
-    const se23_real_t t75 = s01_02 + p0_12 * b11_20 + p0_13 * b11_21 + p0_14 * b11_22;
-    S->e[8] = t75;
-    const se23_real_t s01_10 = S->e[9];
-    const se23_real_t t76 = s01_10 + p1_12 * b11_00 + p1_13 * b11_01 + p1_14 * b11_02;
-    S->e[9] = t76;
-    const se23_real_t s01_11 = S->e[10];
-    const se23_real_t t77 = s01_11 + p1_12 * b11_10 + p1_13 * b11_11 + p1_14 * b11_12;
-    S->e[10] = t77;
-    const se23_real_t s01_12 = S->e[11];
-    const se23_real_t t78 = s01_12 + p1_12 * b11_20 + p1_13 * b11_21 + p1_14 * b11_22;
-    S->e[11] = t78;
-    const se23_real_t s01_20 = S->e[12];
-    const se23_real_t t79 = s01_20 + p2_12 * b11_00 + p2_13 * b11_01 + p2_14 * b11_02;
-    S->e[12] = t79;
-    const se23_real_t s01_21 = S->e[13];
-    const se23_real_t t80 = s01_21 + p2_12 * b11_10 + p2_13 * b11_11 + p2_14 * b11_12;
-    S->e[13] = t80;
-    const se23_real_t s01_22 = S->e[14];
-    const se23_real_t t81 = s01_22 + p2_12 * b11_20 + p2_13 * b11_21 + p2_14 * b11_22;
-    S->e[14] = t81;
-    const se23_real_t s02_00 = S->e[15];
-    const se23_real_t t82 = s02_00 + p0_12 * b21_00 + p0_13 * b21_01 + p0_14 * b21_02;
-    S->e[15] = t82;
-    const se23_real_t s02_01 = S->e[16];
-    const se23_real_t t83 = s02_01 + p0_12 * b21_10 + p0_13 * b21_11 + p0_14 * b21_12;
-    S->e[16] = t83;
-    const se23_real_t s02_02 = S->e[17];
-    const se23_real_t t84 = s02_02 + p0_12 * b21_20 + p0_13 * b21_21 + p0_14 * b21_22;
-    S->e[17] = t84;
-    const se23_real_t s02_10 = S->e[18];
-    const se23_real_t t85 = s02_10 + p1_12 * b21_00 + p1_13 * b21_01 + p1_14 * b21_02;
-    S->e[18] = t85;
-    const se23_real_t s02_11 = S->e[19];
-    const se23_real_t t86 = s02_11 + p1_12 * b21_10 + p1_13 * b21_11 + p1_14 * b21_12;
-    S->e[19] = t86;
-    const se23_real_t s02_12 = S->e[20];
-    const se23_real_t t87 = s02_12 + p1_12 * b21_20 + p1_13 * b21_21 + p1_14 * b21_22;
-    S->e[20] = t87;
-    const se23_real_t s02_20 = S->e[21];
-    const se23_real_t t88 = s02_20 + p2_12 * b21_00 + p2_13 * b21_01 + p2_14 * b21_02;
-    S->e[21] = t88;
-    const se23_real_t s02_21 = S->e[22];
-    const se23_real_t t89 = s02_21 + p2_12 * b21_10 + p2_13 * b21_11 + p2_14 * b21_12;
-    S->e[22] = t89;
-    const se23_real_t s02_22 = S->e[23];
-    const se23_real_t t90 = s02_22 + p2_12 * b21_20 + p2_13 * b21_21 + p2_14 * b21_22;
-    S->e[23] = t90;
-    const se23_real_t qa = q->qa;
-    const se23_real_t t91 = t20 + qa * b11_00;
-    const se23_real_t t92 = t27 + qa * b11_01;
-    const se23_real_t t93 = t34 + qa * b11_02;
-    const se23_real_t s11_00 = S->e[24];
-    const se23_real_t t94 = s11_00 + b11_00 * t91 + b11_01 * t92 + b11_02 * t93 + t19 * b11_00
-                            + t26 * b11_01 + t33 * b11_02;
-    S->e[24] = t94;
-    const se23_real_t t95 = t22 + qa * b11_10;
-    const se23_real_t t96 = t29 + qa * b11_11;
-    const se23_real_t t97 = t36 + qa * b11_12;
-    const se23_real_t s11_01 = S->e[25];
-    const se23_real_t t98 = s11_01 + b11_00 * t95 + b11_01 * t96 + b11_02 * t97 + t19 * b11_10
-                            + t26 * b11_11 + t33 * b11_12;
-    S->e[25] = t98;
-    const se23_real_t t99 = t24 + qa * b11_20;
-    const se23_real_t t100 = t31 + qa * b11_21;
-    const se23_real_t t101 = t38 + qa * b11_22;
-    const se23_real_t s11_02 = S->e[26];
-    const se23_real_t t102 = s11_02 + b11_00 * t99 + b11_01 * t100 + b11_02 * t101
-                             + t19 * b11_20 + t26 * b11_21 + t33 * b11_22;
-    S->e[26] = t102;
-    const se23_real_t s11_11 = S->e[27];
-    const se23_real_t t103 = s11_11 + b11_10 * t95 + b11_11 * t96 + b11_12 * t97 + t21 * b11_10
-                             + t28 * b11_11 + t35 * b11_12;
-    S->e[27] = t103;
-    const se23_real_t s11_12 = S->e[28];
-    const se23_real_t t104 = s11_12 + b11_10 * t99 + b11_11 * t100 + b11_12 * t101
-                             + t21 * b11_20 + t28 * b11_21 + t35 * b11_22;
-    S->e[28] = t104;
-    const se23_real_t s11_22 = S->e[29];
-    const se23_real_t t105 = s11_22 + b11_20 * t99 + b11_21 * t100 + b11_22 * t101
-                             + t23 * b11_20 + t30 * b11_21 + t37 * b11_22;
-    S->e[29] = t105;
-    const se23_real_t t106 = t47 + qa * b21_00;
-    const se23_real_t t107 = t54 + qa * b21_01;
-    const se23_real_t t108 = t61 + qa * b21_02;
-    const se23_real_t s12_00 = S->e[30];
-    const se23_real_t t109 = s12_00 + b11_00 * t106 + b11_01 * t107 + b11_02 * t108
-                             + t19 * b21_00 + t26 * b21_01 + t33 * b21_02;
+    const se23_real_t t88 = p8_14 + dt * p5_14 + U->p.v[1] * p0_14 - U->p.v[0] * p1_14;
+    const se23_real_t t89 = t88 + Bt->blk[2][0].m[2][0] * P[(stride * 9) + 14]
+                            + Bt->blk[2][0].m[2][1] * P[(stride * 10) + 14]
+                            + Bt->blk[2][0].m[2][2] * P[(stride * 11) + 14]
+                            + Bt->blk[2][1].m[2][0] * P[(stride * 12) + 14]
+                            + Bt->blk[2][1].m[2][1] * P[(stride * 13) + 14]
+                            + Bt->blk[2][1].m[2][2] * P[(stride * 14) + 14];
+    const se23_real_t t90 = U->R.m[0][0] * t85 + U->R.m[1][0] * t87 + U->R.m[2][0] * t89;
+    const se23_real_t t91 = U->R.m[0][1] * t71 + U->R.m[1][1] * t73 + U->R.m[2][1] * t75;
+    out[(stride * 6) + 14] = t90;
+    out[(stride * 14) + 6] = t90;
+    const se23_real_t t92 = U->R.m[0][1] * t78 + U->R.m[1][1] * t80 + U->R.m[2][1] * t82;
+    out[(stride * 7) + 12] = t91;
+    out[(stride * 12) + 7] = t91;
+    const se23_real_t t93 = U->R.m[0][1] * t85 + U->R.m[1][1] * t87 + U->R.m[2][1] * t89;
+    out[(stride * 7) + 13] = t92;
+    out[(stride * 13) + 7] = t92;
+    const se23_real_t t94 = U->R.m[0][2] * t71 + U->R.m[1][2] * t73 + U->R.m[2][2] * t75;
+    out[(stride * 7) + 14] = t93;
+    out[(stride * 14) + 7] = t93;
+    const se23_real_t t95 = U->R.m[0][2] * t78 + U->R.m[1][2] * t80 + U->R.m[2][2] * t82;
+    out[(stride * 8) + 12] = t94;
+    out[(stride * 12) + 8] = t94;
+    const se23_real_t t96 = U->R.m[0][2] * t85 + U->R.m[1][2] * t87 + U->R.m[2][2] * t89;
+    out[(stride * 8) + 13] = t95;
+    out[(stride * 13) + 8] = t95;
+    out[(stride * 8) + 14] = t96;
+    out[(stride * 14) + 8] = t96;
+    const se23_real_t t97 = S->e[15] + p0_12 * Bt->blk[2][1].m[0][0]
+                            + p0_13 * Bt->blk[2][1].m[0][1] + p0_14 * Bt->blk[2][1].m[0][2];
+    S->e[15] = t97;
+    const se23_real_t t98 = S->e[16] + p0_12 * Bt->blk[2][1].m[1][0]
+                            + p0_13 * Bt->blk[2][1].m[1][1] + p0_14 * Bt->blk[2][1].m[1][2];
+    S->e[16] = t98;
+    const se23_real_t t99 = S->e[17] + p0_12 * Bt->blk[2][1].m[2][0]
+                            + p0_13 * Bt->blk[2][1].m[2][1] + p0_14 * Bt->blk[2][1].m[2][2];
+    S->e[17] = t99;
+    const se23_real_t t100 = S->e[18] + p1_12 * Bt->blk[2][1].m[0][0]
+                             + p1_13 * Bt->blk[2][1].m[0][1] + p1_14 * Bt->blk[2][1].m[0][2];
+    S->e[18] = t100;
+    const se23_real_t t101 = S->e[19] + p1_12 * Bt->blk[2][1].m[1][0]
+                             + p1_13 * Bt->blk[2][1].m[1][1] + p1_14 * Bt->blk[2][1].m[1][2];
+    S->e[19] = t101;
+    const se23_real_t t102 = S->e[20] + p1_12 * Bt->blk[2][1].m[2][0]
+                             + p1_13 * Bt->blk[2][1].m[2][1] + p1_14 * Bt->blk[2][1].m[2][2];
+    S->e[20] = t102;
+    const se23_real_t t103 = S->e[21] + p2_12 * Bt->blk[2][1].m[0][0]
+                             + p2_13 * Bt->blk[2][1].m[0][1] + p2_14 * Bt->blk[2][1].m[0][2];
+    S->e[21] = t103;
+    const se23_real_t t104 = S->e[22] + p2_12 * Bt->blk[2][1].m[1][0]
+                             + p2_13 * Bt->blk[2][1].m[1][1] + p2_14 * Bt->blk[2][1].m[1][2];
+    S->e[22] = t104;
+    const se23_real_t t105 = S->e[23] + p2_12 * Bt->blk[2][1].m[2][0]
+                             + p2_13 * Bt->blk[2][1].m[2][1] + p2_14 * Bt->blk[2][1].m[2][2];
+    S->e[23] = t105;
+    const se23_real_t t106 = t71 + q->qa * Bt->blk[2][1].m[0][0];
+    const se23_real_t t107 = t78 + q->qa * Bt->blk[2][1].m[0][1];
+    const se23_real_t t108 = t85 + q->qa * Bt->blk[2][1].m[0][2];
+    const se23_real_t t109 = S->e[30] + Bt->blk[1][1].m[0][0] * t106
+                             + Bt->blk[1][1].m[0][1] * t107 + Bt->blk[1][1].m[0][2] * t108
+                             + t19 * Bt->blk[2][1].m[0][0] + t26 * Bt->blk[2][1].m[0][1]
+                             + t33 * Bt->blk[2][1].m[0][2];
     S->e[30] = t109;
-    const se23_real_t t110 = t49 + qa * b21_10;
-    const se23_real_t t111 = t56 + qa * b21_11;
-    const se23_real_t t112 = t63 + qa * b21_12;
-    const se23_real_t s12_01 = S->e[31];
-    const se23_real_t t113 = s12_01 + b11_00 * t110 + b11_01 * t111 + b11_02 * t112
-                             + t19 * b21_10 + t26 * b21_11 + t33 * b21_12;
+    const se23_real_t t110 = t73 + q->qa * Bt->blk[2][1].m[1][0];
+    const se23_real_t t111 = t80 + q->qa * Bt->blk[2][1].m[1][1];
+    const se23_real_t t112 = t87 + q->qa * Bt->blk[2][1].m[1][2];
+    const se23_real_t t113 = S->e[31] + Bt->blk[1][1].m[0][0] * t110
+                             + Bt->blk[1][1].m[0][1] * t111 + Bt->blk[1][1].m[0][2] * t112
+                             + t19 * Bt->blk[2][1].m[1][0] + t26 * Bt->blk[2][1].m[1][1]
+                             + t33 * Bt->blk[2][1].m[1][2];
     S->e[31] = t113;
-    const se23_real_t t114 = t51 + qa * b21_20;
-    const se23_real_t t115 = t58 + qa * b21_21;
-    const se23_real_t t116 = t65 + qa * b21_22;
-    const se23_real_t s12_02 = S->e[32];
-    const se23_real_t t117 = s12_02 + b11_00 * t114 + b11_01 * t115 + b11_02 * t116
-                             + t19 * b21_20 + t26 * b21_21 + t33 * b21_22;
+    const se23_real_t t114 = t75 + q->qa * Bt->blk[2][1].m[2][0];
+    const se23_real_t t115 = t82 + q->qa * Bt->blk[2][1].m[2][1];
+    const se23_real_t t116 = t89 + q->qa * Bt->blk[2][1].m[2][2];
+    const se23_real_t t117 = S->e[32] + Bt->blk[1][1].m[0][0] * t114
+                             + Bt->blk[1][1].m[0][1] * t115 + Bt->blk[1][1].m[0][2] * t116
+                             + t19 * Bt->blk[2][1].m[2][0] + t26 * Bt->blk[2][1].m[2][1]
+                             + t33 * Bt->blk[2][1].m[2][2];
     S->e[32] = t117;
-    const se23_real_t s12_10 = S->e[33];
-    const se23_real_t t118 = s12_10 + b11_10 * t106 + b11_11 * t107 + b11_12 * t108
-                             + t21 * b21_00 + t28 * b21_01 + t35 * b21_02;
+    const se23_real_t t118 = S->e[33] + Bt->blk[1][1].m[1][0] * t106
+                             + Bt->blk[1][1].m[1][1] * t107 + Bt->blk[1][1].m[1][2] * t108
+                             + t21 * Bt->blk[2][1].m[0][0] + t28 * Bt->blk[2][1].m[0][1]
+                             + t35 * Bt->blk[2][1].m[0][2];
     S->e[33] = t118;
-    const se23_real_t s12_11 = S->e[34];
-    const se23_real_t t119 = s12_11 + b11_10 * t110 + b11_11 * t111 + b11_12 * t112
-                             + t21 * b21_10 + t28 * b21_11 + t35 * b21_12;
+    const se23_real_t t119 = S->e[34] + Bt->blk[1][1].m[1][0] * t110
+                             + Bt->blk[1][1].m[1][1] * t111 + Bt->blk[1][1].m[1][2] * t112
+                             + t21 * Bt->blk[2][1].m[1][0] + t28 * Bt->blk[2][1].m[1][1]
+                             + t35 * Bt->blk[2][1].m[1][2];
     S->e[34] = t119;
-    const se23_real_t s12_12 = S->e[35];
-    const se23_real_t t120 = s12_12 + b11_10 * t114 + b11_11 * t115 + b11_12 * t116
-                             + t21 * b21_20 + t28 * b21_21 + t35 * b21_22;
+    const se23_real_t t120 = S->e[35] + Bt->blk[1][1].m[1][0] * t114
+                             + Bt->blk[1][1].m[1][1] * t115 + Bt->blk[1][1].m[1][2] * t116
+                             + t21 * Bt->blk[2][1].m[2][0] + t28 * Bt->blk[2][1].m[2][1]
+                             + t35 * Bt->blk[2][1].m[2][2];
     S->e[35] = t120;
-    const se23_real_t s12_20 = S->e[36];
-    const se23_real_t t121 = s12_20 + b11_20 * t106 + b11_21 * t107 + b11_22 * t108
-                             + t23 * b21_00 + t30 * b21_01 + t37 * b21_02;
+    const se23_real_t t121 = S->e[36] + Bt->blk[1][1].m[2][0] * t106
+                             + Bt->blk[1][1].m[2][1] * t107 + Bt->blk[1][1].m[2][2] * t108
+                             + t23 * Bt->blk[2][1].m[0][0] + t30 * Bt->blk[2][1].m[0][1]
+                             + t37 * Bt->blk[2][1].m[0][2];
     S->e[36] = t121;
-    const se23_real_t s12_21 = S->e[37];
-    const se23_real_t t122 = s12_21 + b11_20 * t110 + b11_21 * t111 + b11_22 * t112
-                             + t23 * b21_10 + t30 * b21_11 + t37 * b21_12;
+    const se23_real_t t122 = S->e[37] + Bt->blk[1][1].m[2][0] * t110
+                             + Bt->blk[1][1].m[2][1] * t111 + Bt->blk[1][1].m[2][2] * t112
+                             + t23 * Bt->blk[2][1].m[1][0] + t30 * Bt->blk[2][1].m[1][1]
+                             + t37 * Bt->blk[2][1].m[1][2];
     S->e[37] = t122;
-    const se23_real_t s12_22 = S->e[38];
-    const se23_real_t t123 = s12_22 + b11_20 * t114 + b11_21 * t115 + b11_22 * t116
-                             + t23 * b21_20 + t30 * b21_21 + t37 * b21_22;
+    const se23_real_t t123 = S->e[38] + Bt->blk[1][1].m[2][0] * t114
+                             + Bt->blk[1][1].m[2][1] * t115 + Bt->blk[1][1].m[2][2] * t116
+                             + t23 * Bt->blk[2][1].m[2][0] + t30 * Bt->blk[2][1].m[2][1]
+                             + t37 * Bt->blk[2][1].m[2][2];
     S->e[38] = t123;
-    const se23_real_t s22_00 = S->e[39];
-    const se23_real_t t124 = s22_00 + b21_00 * t106 + b21_01 * t107 + b21_02 * t108
-                             + t46 * b21_00 + t53 * b21_01 + t60 * b21_02;
+    const se23_real_t t124 = S->e[39] + Bt->blk[2][1].m[0][0] * t106
+                             + Bt->blk[2][1].m[0][1] * t107 + Bt->blk[2][1].m[0][2] * t108
+                             + t70 * Bt->blk[2][1].m[0][0] + t77 * Bt->blk[2][1].m[0][1]
+                             + t84 * Bt->blk[2][1].m[0][2];
     S->e[39] = t124;
-    const se23_real_t s22_01 = S->e[40];
-    const se23_real_t t125 = s22_01 + b21_00 * t110 + b21_01 * t111 + b21_02 * t112
-                             + t46 * b21_10 + t53 * b21_11 + t60 * b21_12;
+    const se23_real_t t125 = S->e[40] + Bt->blk[2][1].m[0][0] * t110
+                             + Bt->blk[2][1].m[0][1] * t111 + Bt->blk[2][1].m[0][2] * t112
+                             + t70 * Bt->blk[2][1].m[1][0] + t77 * Bt->blk[2][1].m[1][1]
+                             + t84 * Bt->blk[2][1].m[1][2];
     S->e[40] = t125;
-    const se23_real_t s22_02 = S->e[41];
-    const se23_real_t t126 = s22_02 + b21_00 * t114 + b21_01 * t115 + b21_02 * t116
-                             + t46 * b21_20 + t53 * b21_21 + t60 * b21_22;
+    const se23_real_t t126 = S->e[41] + Bt->blk[2][1].m[0][0] * t114
+                             + Bt->blk[2][1].m[0][1] * t115 + Bt->blk[2][1].m[0][2] * t116
+                             + t70 * Bt->blk[2][1].m[2][0] + t77 * Bt->blk[2][1].m[2][1]
+                             + t84 * Bt->blk[2][1].m[2][2];
     S->e[41] = t126;
-    const se23_real_t s22_11 = S->e[42];
-    const se23_real_t t127 = s22_11 + b21_10 * t110 + b21_11 * t111 + b21_12 * t112
-                             + t48 * b21_10 + t55 * b21_11 + t62 * b21_12;
+    const se23_real_t t127 = S->e[42] + Bt->blk[2][1].m[1][0] * t110
+                             + Bt->blk[2][1].m[1][1] * t111 + Bt->blk[2][1].m[1][2] * t112
+                             + t72 * Bt->blk[2][1].m[1][0] + t79 * Bt->blk[2][1].m[1][1]
+                             + t86 * Bt->blk[2][1].m[1][2];
     S->e[42] = t127;
-    const se23_real_t s22_12 = S->e[43];
-    const se23_real_t t128 = s22_12 + b21_10 * t114 + b21_11 * t115 + b21_12 * t116
-                             + t48 * b21_20 + t55 * b21_21 + t62 * b21_22;
+    const se23_real_t t128 = S->e[43] + Bt->blk[2][1].m[1][0] * t114
+                             + Bt->blk[2][1].m[1][1] * t115 + Bt->blk[2][1].m[1][2] * t116
+                             + t72 * Bt->blk[2][1].m[2][0] + t79 * Bt->blk[2][1].m[2][1]
+                             + t86 * Bt->blk[2][1].m[2][2];
     S->e[43] = t128;
-    const se23_real_t s22_22 = S->e[44];
-    const se23_real_t t129 = s22_22 + b21_20 * t114 + b21_21 * t115 + b21_22 * t116
-                             + t50 * b21_20 + t57 * b21_21 + t64 * b21_22;
+    const se23_real_t t129 = S->e[44] + Bt->blk[2][1].m[2][0] * t114
+                             + Bt->blk[2][1].m[2][1] * t115 + Bt->blk[2][1].m[2][2] * t116
+                             + t74 * Bt->blk[2][1].m[2][0] + t81 * Bt->blk[2][1].m[2][1]
+                             + t88 * Bt->blk[2][1].m[2][2];
     S->e[44] = t129;
+}
+
+/* 15 states, third stage: the bias block: 0 multiplies and 6 adds (fused
+ * into multiply-adds where the target has them); reads 21 entries of P,
+ * stores 36. */
+void se23_cov_step15_bias(const se23_step_noise_t *q, const se23_real_t *P, se23_real_t *out,
+                          int stride)
+{
     const se23_real_t p9_9 = P[(stride * 9) + 9];
     const se23_real_t wg = q->wg;
-    const se23_real_t t130 = p9_9 + wg;
-    out[(stride * 9) + 9] = t130;
+    const se23_real_t t1 = p9_9 + wg;
+    out[(stride * 9) + 9] = t1;
     const se23_real_t p9_10 = P[(stride * 9) + 10];
     out[(stride * 9) + 10] = p9_10;
     out[(stride * 10) + 9] = p9_10;
@@ -1058,45 +1153,60 @@ void se23_cov_step15_accel(const se23_pose_t *U, se23_real_t dt, const se23_inpu
     out[(stride * 9) + 11] = p9_11;
     out[(stride * 11) + 9] = p9_11;
     const se23_real_t p10_10 = P[(stride * 10) + 10];
-    const se23_real_t t131 = p10_10 + wg;
-    out[(stride * 10) + 10] = t131;
+    const se23_real_t t2 = p10_10 + wg;
+    out[(stride * 10) + 10] = t2;
     const se23_real_t p10_11 = P[(stride * 10) + 11];
     out[(stride * 10) + 11] = p10_11;
     out[(stride * 11) + 10] = p10_11;
     const se23_real_t p11_11 = P[(stride * 11) + 11];
-    const se23_real_t t132 = p11_11 + wg;
-    out[(stride * 11) + 11] = t132;
+    const se23_real_t t3 = p11_11 + wg;
+    out[(stride * 11) + 11] = t3;
+    const se23_real_t p9_12 = P[(stride * 9) + 12];
     out[(stride * 9) + 12] = p9_12;
     out[(stride * 12) + 9] = p9_12;
+    const se23_real_t p9_13 = P[(stride * 9) + 13];
     out[(stride * 9) + 13] = p9_13;
     out[(stride * 13) + 9] = p9_13;
+    const se23_real_t p9_14 = P[(stride * 9) + 14];
     out[(stride * 9) + 14] = p9_14;
     out[(stride * 14) + 9] = p9_14;
+    const se23_real_t p10_12 = P[(stride * 10) + 12];
     out[(stride * 10) + 12] = p10_12;
     out[(stride * 12) + 10] = p10_12;
+    const se23_real_t p10_13 = P[(stride * 10) + 13];
     out[(stride * 10) + 13] = p10_13;
     out[(stride * 13) + 10] = p10_13;
+    const se23_real_t p10_14 = P[(stride * 10) + 14];
     out[(stride * 10) + 14] = p10_14;
     out[(stride * 14) + 10] = p10_14;
+    const se23_real_t p11_12 = P[(stride * 11) + 12];
     out[(stride * 11) + 12] = p11_12;
     out[(stride * 12) + 11] = p11_12;
+    const se23_real_t p11_13 = P[(stride * 11) + 13];
     out[(stride * 11) + 13] = p11_13;
     out[(stride * 13) + 11] = p11_13;
+    const se23_real_t p11_14 = P[(stride * 11) + 14];
     out[(stride * 11) + 14] = p11_14;
     out[(stride * 14) + 11] = p11_14;
+    const se23_real_t p12_12 = P[(stride * 12) + 12];
     const se23_real_t wa = q->wa;
-    const se23_real_t t133 = p12_12 + wa;
-    out[(stride * 12) + 12] = t133;
+    const se23_real_t t4 = p12_12 + wa;
+    out[(stride * 12) + 12] = t4;
+    const se23_real_t p12_13 = P[(stride * 12) + 13];
     out[(stride * 12) + 13] = p12_13;
     out[(stride * 13) + 12] = p12_13;
+    const se23_real_t p12_14 = P[(stride * 12) + 14];
     out[(stride * 12) + 14] = p12_14;
     out[(stride * 14) + 12] = p12_14;
-    const se23_real_t t134 = p13_13 + wa;
-    out[(stride * 13) + 13] = t134;
+    const se23_real_t p13_13 = P[(stride * 13) + 13];
+    const se23_real_t t5 = p13_13 + wa;
+    out[(stride * 13) + 13] = t5;
+    const se23_real_t p13_14 = P[(stride * 13) + 14];
     out[(stride * 13) + 14] = p13_14;
     out[(stride * 14) + 13] = p13_14;
-    const se23_real_t t135 = p14_14 + wa;
-    out[(stride * 14) + 14] = t135;
+    const se23_real_t p14_14 = P[(stride * 14) + 14];
+    const se23_real_t t6 = p14_14 + wa;
+    out[(stride * 14) + 14] = t6;
 }
 
 /* 9 and 15 states, after E: S += G X G^T: 216 multiplies and 261 adds

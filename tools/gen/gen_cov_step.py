@@ -13,7 +13,11 @@ scalar statements, skips the products with structural zeros (v^ and p^
 have zero diagonals, Bt's phi row has no accel block, dt I is diagonal),
 and counts the arithmetic it emits. Every entry of P is read once, into a
 local, and each entry of out is stored once, after the read of the entry
-it overwrites: out may alias P.
+it overwrites: out may alias P. The two 15-state bias stages, whose live
+sets are the largest, instead read the entries of P they do not store, and
+U, Bt, q and the scratch S, at every use: held in locals across the
+stores to out, which the compiler must assume may change them, they would
+be spilled to the stack (about 180 B more on Cortex-M4F).
 """
 import os
 import sys
@@ -27,7 +31,8 @@ class Gen:
     """Emits the statements of one function. An entry of a 3x3 block is
     None (a structural zero) or (sign, name) of a scalar local."""
 
-    def __init__(self, used=None, src="P", dst="out", stride=None, prefix="p"):
+    def __init__(self, used=None, stored=None, src="P", dst="out", stride=None, prefix="p",
+                 reread=False):
         self.src, self.dst, self.stride = src, dst, stride  # stride None: `stride`
         self.prefix = prefix  # of the locals read from src
         self.lines = []
@@ -37,10 +42,13 @@ class Gen:
         self.loaded = set()
         self.used = used if used is not None else set()  # P entries read at all
         self.record = used is None
+        self.stored = stored if stored is not None else set()  # P entries it stores
+        self.reread = reread  # inputs and unstored P entries read at every use
+        self.reads = set()
         self.pending = []  # (row, col, entry) stores not yet emitted
         self.lazy = []  # [emitted entry or None, base, products] per sum
         self.stores = 0
-        self.inputs = {}  # local -> its read from U, Bt or q, declared at first use
+        self.inputs = {}  # name -> its read from U, Bt, q or S
 
     # --- loads of P, lazy ---------------------------------------------------
     def p_name(self, r, c):
@@ -50,6 +58,9 @@ class Gen:
         name = self.p_name(r, c)
         if self.record:
             self.used.add((r, c))
+        self.reads.add((r, c))
+        if self.reread and not self.record and (r, c) not in self.stored:
+            return (1, "%s[%s]" % (self.src, self.index(r, c)))
         if name not in self.loaded:
             self.loaded.add(name)
             self.lines.append("const se23_real_t %s = %s[%s];"
@@ -112,6 +123,8 @@ class Gen:
             return None
         # the unit factor of an added block (lin's extra) is not multiplied
         terms = [(sg, [f for f in fs if f != ONE[1]] or [ONE[1]]) for sg, fs in terms]
+        if self.reread:
+            terms = [(sg, [self.inputs.get(f, f) for f in fs]) for sg, fs in terms]
         if len(terms) == 1 and len(terms[0][1]) == 1:
             return (terms[0][0], terms[0][1][0])
         # a lone factor (the block being added to) goes first
@@ -171,7 +184,7 @@ class Gen:
             for b in range(a if i == j else 0, 3):
                 e = self.value(blk[a][b])
                 dst = scratch_entry(i, j, a, b)
-                if e is not None and e[0] > 0 and self.inputs.get(e[1]) == dst:
+                if e is not None and e[0] > 0 and dst in (e[1], self.inputs.get(e[1])):
                     continue  # the entry is unchanged
                 rhs = "SE23_R(0)" if e is None else ("-" if e[0] < 0 else "") + e[1]
                 self.lines.append("%s = %s;" % (dst, rhs))
@@ -203,6 +216,7 @@ class Gen:
             else:
                 rhs = ("-" if e[0] < 0 else "") + e[1]
             self.lines.append("%s[%s] = %s;" % (self.dst, self.index(r, c), rhs))
+            self.stored.add((r, c))
             self.stores += 1
         self.pending = keep
 
@@ -263,8 +277,9 @@ def kernel(g, mode):
     its own, so that none holds another's values in registers. S = E:
     "noise9" for 9 states (E = Bt N Bt^T); for 15, "bias15g" and "bias15a"
     store the cross blocks of the gyro and the accel bias and E by bias
-    column (from Y = G C and Zq = Y + Bt Bb + Bt N), the second also the
-    bias block. Then "shear", for both: S += G X G^T."""
+    column (from Y = G C and Zq = Y + Bt Bb + Bt N), then "bias15w" the
+    bias block Bb + W, after both stages that read Bb (out may alias P).
+    Then "shear", for both: S += G X G^T."""
     R = named("r")
     Rt = tr(R)
     Vp, Vm = skew("vel", 1), skew("vel", -1)
@@ -292,24 +307,25 @@ def kernel(g, mode):
         Bb = [[g.p_block(9 + 3 * a, 9 + 3 * b) if a <= b else tr(g.p_block(9 + 3 * b, 9 + 3 * a))
                for b in range(2)] for a in range(2)]
         Y = shear(g.p_block(0, 9 + 3 * k), g.p_block(3, 9 + 3 * k), g.p_block(6, 9 + 3 * k))
-        Zq = [None] * 3
-        for i in range(3):
-            pairs = [(Bt[i][l], Bb[l][k]) for l in range(2) if Bt[i][l] is not None]
-            Z = g.lin(pairs, base=Y[i])
-            Zq[i] = Z if Bt[i][k] is None else g.lin([(diag(qs[k]), Bt[i][k])], base=Z)
-            g.store_block(3 * i, 9 + 3 * k, g.lin([(Rt, Z)]), mirror=True)
-        for i in range(3):
-            for j in range(i, 3):
+        # by block columns j of S, so that of Zq only column j's is live
+        for j in range(3):
+            pairs = [(Bt[j][l], Bb[l][k]) for l in range(2) if Bt[j][l] is not None]
+            Z = g.lin(pairs, base=Y[j])
+            Zq = Z if Bt[j][k] is None else g.lin([(diag(qs[k]), Bt[j][k])], base=Z)
+            g.store_block(3 * j, 9 + 3 * k, g.lin([(Rt, Z)]), mirror=True)
+            for i in range(j + 1):
                 pairs = []
                 if Bt[i][k] is not None:
-                    pairs.append((Bt[i][k], tr(Zq[j])))
+                    pairs.append((Bt[i][k], tr(Zq)))
                 if Bt[j][k] is not None:
                     pairs.append((Y[i], tr(Bt[j][k])))
                 prev = scratch_block(i, j) if k == 1 else None
                 g.put_block(i, j, g.lin(pairs, sym=(i == j), extra=prev))
-        if k == 0:
-            g.finish()
-            return
+        g.finish()
+        return
+    if mode == "bias15w":
+        Bb = [[g.p_block(9 + 3 * a, 9 + 3 * b) if a <= b else tr(g.p_block(9 + 3 * b, 9 + 3 * a))
+               for b in range(2)] for a in range(2)]
         ws = ["wg", "wa"]  # the bias block, Bb + W
         for kb in range(2):
             for lb in range(kb, 2):
@@ -419,8 +435,9 @@ def input_block(i, k):
 
 
 def inputs():
-    """The locals of U, Bt and q: read where first used (they cannot alias
-    out, so their reads may follow stores)."""
+    """The reads of U, Bt, q and S, by the names of their entries: a local
+    declared at first use, or with Gen.reread the read itself at every use
+    (they cannot alias out, so their reads may follow stores)."""
     ins = {}
     for i in range(3):
         for j in range(3):
@@ -454,10 +471,13 @@ SIGNATURES = {
                 "const se23_step_noise_t *q, const se23_real_t *P, se23_real_t *out,\n"
                 "int stride, se23_cov_pose_t *S"),
     "bias15a": ("se23_cov_step15_accel", "15 states, second stage: the accel-bias "
-                "cross blocks, the bias block, S += E's accel terms",
+                "cross blocks, S += E's accel terms",
                 "const se23_pose_t *U, se23_real_t dt, const se23_input_blocks_t *Bt,\n"
                 "const se23_step_noise_t *q, const se23_real_t *P, se23_real_t *out,\n"
                 "int stride, se23_cov_pose_t *S"),
+    "bias15w": ("se23_cov_step15_bias", "15 states, third stage: the bias block",
+                "const se23_step_noise_t *q, const se23_real_t *P, se23_real_t *out,\n"
+                "int stride"),
     "shear": ("se23_cov_shear_pose", "9 and 15 states, after E: S += G X G^T",
               "const se23_pose_t *U, se23_real_t dt, const se23_real_t *P, int stride,\n"
               "se23_cov_pose_t *S"),
@@ -474,14 +494,15 @@ def function(mode):
             rotate_kernel(g)
         else:
             kernel(g, mode)
-    probe = Gen()
+    reread = mode in ("bias15g", "bias15a")
+    probe = Gen(reread=reread)
     run(probe)
-    g = Gen(used=probe.used)
+    g = Gen(used=probe.used, stored=probe.stored, reread=reread)
     run(g)
     name, what, params = SIGNATURES[mode]
     pad = " " * (len(name) + 6)
-    io = ("; reads %d entries of P, stores %d" % (len(g.loaded), g.stores)
-          if g.loaded or g.stores else "")
+    io = ("; reads %d entries of P, stores %d" % (len(g.reads), g.stores)
+          if g.reads or g.stores else "")
     doc = textwrap.wrap("%s: %d multiplies and %d adds (fused into multiply-adds "
                         "where the target has them)%s." % (what, g.muls, g.adds, io), 72,
                         break_on_hyphens=False)
@@ -494,11 +515,11 @@ def jac_function():
     probe = Gen(src="J->m", dst="J->m", stride=6, prefix="j")
     probe.inputs = inputs()
     jac_kernel(probe)
-    g = Gen(used=probe.used, src="J->m", dst="J->m", stride=6, prefix="j")
+    g = Gen(used=probe.used, stored=probe.stored, src="J->m", dst="J->m", stride=6, prefix="j")
     g.inputs = inputs()
     jac_kernel(g)
     doc = ("/* %d multiplies and %d adds, %d reads of J, 54 stores. */\n"
-           % (g.muls, g.adds, len(g.loaded)))
+           % (g.muls, g.adds, len(g.reads)))
     sig = ("void se23_cov_jac_step(const se23_pose_t *U, se23_real_t dt,\n"
            "                       const se23_input_blocks_t *Bt, se23_mat9x6_t *J)\n")
     return doc + sig + "{\n" + "\n".join("    " + x for x in g.lines) + "\n}\n"
@@ -506,7 +527,7 @@ def jac_function():
 
 def source():
     parts = []
-    for mode in ("noise9", "bias15g", "bias15a", "shear", "rotate"):
+    for mode in ("noise9", "bias15g", "bias15a", "bias15w", "shear", "rotate"):
         parts.append(function(mode))
     parts.append(jac_function())
     return ("/* Generated by tools/gen/gen_cov_step.py: do not edit; change the\n"
