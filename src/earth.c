@@ -116,20 +116,9 @@ se23_status_t se23_earth_gamma(const se23_vec3_t *g_n, const se23_vec3_t *w_ie_n
     se23_real_t k1;
     se23_real_t k2;
     se23_so3_k_coeffs(theta, &k1, &k2);
-
-    se23_pose_t out;
-    se23_mat3_t M;
-    se23_m3_series(SE23_R(1), c.c1, c.c2, &phi, &out.R);
-    se23_m3_series(SE23_R(1), c.c2, c.c3, &phi, &M);
-    se23_m3_mul_v3(&M, g_n, &out.v);
-    se23_v3_scale(&out.v, t, &out.v);
-    se23_m3_series(SE23_R(0.5), k1, k2, &phi, &M);
-    se23_m3_mul_v3(&M, g_n, &out.p);
-    se23_v3_scale(&out.p, t * t, &out.p);
-    if (!se23_pose_finite(&out)) {
+    if (!se23_so3_gamma_series(&phi, &c, k1, k2, t, g_n, gamma)) {
         return SE23_ERR_NONFINITE; /* |Omega t|^2 or t^2 g overflowed */
     }
-    *gamma = out;
     return SE23_OK;
 }
 

@@ -30,17 +30,16 @@ void se23_preint_classic_step(se23_preint_classic_t *c, const se23_mat3_t *dR,
     se23_m3_skew(f, &fx);
     se23_m3_mul(dR, &fx, &RFx);                        /* DeltaR f^ */
     const se23_real_t h = SE23_R(0.5) * dt * dt;
-    se23_preint_classic_t n;
-    /* Every right-hand side reads the values before the sample. */
-    se23_m3_mul_tn(dR_k, &c->dR_dbg, &t);
-    se23_m3_axpy(&t, dt, &Jr, &n.dR_dbg);
-    m3_add_mul(&c->dV_dbg, -dt, &RFx, &c->dR_dbg, &n.dV_dbg);
-    se23_m3_axpy(&c->dV_dba, dt, dR, &n.dV_dba);
+    /* Every right-hand side reads the values before the sample: updated
+     * in place in the order X, V, R, each read before its own update. */
     se23_m3_axpy(&c->dX_dbg, dt, &c->dV_dbg, &t);
-    m3_add_mul(&t, -h, &RFx, &c->dR_dbg, &n.dX_dbg);
+    m3_add_mul(&t, -h, &RFx, &c->dR_dbg, &c->dX_dbg);
     se23_m3_axpy(&c->dX_dba, dt, &c->dV_dba, &t);
-    se23_m3_axpy(&t, h, dR, &n.dX_dba);
-    *c = n;
+    se23_m3_axpy(&t, h, dR, &c->dX_dba);
+    m3_add_mul(&c->dV_dbg, -dt, &RFx, &c->dR_dbg, &c->dV_dbg);
+    se23_m3_axpy(&c->dV_dba, dt, dR, &c->dV_dba);
+    se23_m3_mul_tn(dR_k, &c->dR_dbg, &t);
+    se23_m3_axpy(&t, dt, &Jr, &c->dR_dbg);
 }
 
 void se23_preint_classic_apply(const se23_preint_classic_t *c,

@@ -9,6 +9,7 @@
  */
 #include "so3_series.h"
 
+#include "linalg.h"
 #include "se23_math.h"
 #include "trig.h"
 
@@ -153,6 +154,26 @@ void se23_so3_k_coeffs(se23_real_t theta, se23_real_t *k1, se23_real_t *k2)
     const se23_real_t cos_theta = SE23_R(1) - one_minus_cos;
     *k1 = (s - theta * cos_theta) / (t * theta);
     *k2 = (SE23_R(0.5) * t + one_minus_cos - theta * s) / (t * t);
+}
+
+int se23_so3_gamma_series(const se23_vec3_t *phi, const se23_so3_coeffs_t *c,
+                          se23_real_t k1, se23_real_t k2, se23_real_t t,
+                          const se23_vec3_t *g, se23_pose_t *gamma)
+{
+    se23_pose_t out;
+    se23_mat3_t M;
+    se23_m3_series(SE23_R(1), c->c1, c->c2, phi, &out.R);
+    se23_m3_series(SE23_R(1), c->c2, c->c3, phi, &M);
+    se23_m3_mul_v3(&M, g, &out.v);
+    se23_v3_scale(&out.v, t, &out.v);
+    se23_m3_series(SE23_R(0.5), k1, k2, phi, &M);
+    se23_m3_mul_v3(&M, g, &out.p);
+    se23_v3_scale(&out.p, t * t, &out.p);
+    if (!se23_pose_finite(&out)) {
+        return 0;
+    }
+    *gamma = out;
+    return 1;
 }
 
 /* With x = theta/2: 1 - x cot x = (sin x - x cos x)/sin x = x^2 k1(x)/c1(x),

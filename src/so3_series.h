@@ -47,6 +47,18 @@ void se23_so3_coeffs(se23_real_t theta, se23_so3_coeffs_t *c);
 /** k1, k2 (coefficients of K) at theta >= 0. */
 void se23_so3_k_coeffs(se23_real_t theta, se23_real_t *k1, se23_real_t *k2);
 
+/**
+ * Gamma_t of paper eq. (discrete) for a constant Earth rate (earth.h):
+ * R = exp(phi) = I + c1 W + c2 W^2, v = t J_l(phi) g, p = t^2 K(phi) g,
+ * W = phi^, from c and k1, k2 at |phi|. A call of its own, made after the
+ * coefficients, so that its pose and matrix are not on the stack under the
+ * sine of the coefficients.
+ * @return 1, or 0 (gamma unwritten) if an entry overflowed.
+ */
+int se23_so3_gamma_series(const se23_vec3_t *phi, const se23_so3_coeffs_t *c,
+                          se23_real_t k1, se23_real_t k2, se23_real_t t,
+                          const se23_vec3_t *g, se23_pose_t *gamma);
+
 /** e (coefficient of J_l^-1) at 0 <= theta < 2 pi. */
 se23_real_t se23_so3_jl_inv_coeff(se23_real_t theta);
 
