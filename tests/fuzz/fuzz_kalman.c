@@ -102,6 +102,22 @@ static int meas_of(fz_t *f, const se23_pose_t *T, const se23_vec3_t *b_g, se23_m
     return st == SE23_OK;
 }
 
+/* 1 if column j of the n x n P (stride 15) holds a nonzero. A P that
+ * se23_gauss_check accepts differs from a PSD matrix by a dP within the
+ * span of its eigenvectors of negative eigenvalue, which lies in the
+ * coordinates of those columns: H's entries elsewhere (an exactly known
+ * attitude read through H = 1e308) meet no defect. */
+static int in_support(const se23_real_t *P, int n, int j)
+{
+    int i;
+    for (i = 0; i < n; ++i) {
+        if (P[15 * i + j] != 0) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
 /* The bound of the known finding (fuzz.h) for the update of g with y:
  *  - rounding (src/kalman_parts.c): P+ is the exact Schur complement of a
  *    matrix within g (M_ii M_jj)^1/2 of M = [[S, C^T], [C, P]],
@@ -111,7 +127,8 @@ static int meas_of(fz_t *f, const se23_pose_t *T, const se23_vec3_t *b_g, se23_m
  *  - the inputs' own tolerance: P and R are accepted when PSD within
  *    SE23_CFG_COV_TOL of their largest variance, and P+ = (I - K H) P
  *    (I - K H)^T + K R K^T carries a defect dP, dR of that size as
- *    (I - K H) dP (I - K H)^T + K dR K^T: |I - K H|_F^2 tol s_P n +
+ *    (I - K H) dP (I - K H)^T + K dR K^T: |(I - K H) E|_F^2 tol s_P n
+ *    (E the support of P, in_support) +
  *    |K|_F^2 tol s_R m (K = C S^-1 in long double; S from R's upper
  *    triangle, as the update reads it). */
 static double update_bound(const se23_gauss_t *g, const se23_meas_t *y)
@@ -188,9 +205,12 @@ static double update_bound(const se23_gauss_t *g, const se23_meas_t *y)
             }
         }
     }
-    for (i = 0; i < n; ++i) { /* |I - K H|_F^2 */
+    for (i = 0; i < n; ++i) { /* |(I - K H) E|_F^2, E the support of P */
         for (j = 0; j < n; ++j) {
             long double x = (i == j) ? 1.0L : 0.0L;
+            if (!in_support(g->P.m, n, j)) {
+                continue;
+            }
             for (r = 0; r < m; ++r) {
                 x -= K[i][r] * y->H[15 * r + j];
             }
@@ -200,8 +220,11 @@ static double update_bound(const se23_gauss_t *g, const se23_meas_t *y)
     /* the rounding dM passes through S^-1 as well: K dS K^T, |K|^2 |dS|
      * (src/kalman_parts.c states only the first term, which does not hold
      * for a nearly singular S: R = 0 and rows that pin a state jointly) */
-    return 4.0 * gam * (n + m) * mx * (double)(1.0L + 2.0L * sqrtl(k2) + k2) +
-           (double)(SE23_CFG_COV_TOL * (a2 * sp * n + k2 * sr * m));
+    {
+        const long double b = 4.0L * gam * (n + m) * mx * (1.0L + 2.0L * sqrtl(k2) + k2) +
+                              SE23_CFG_COV_TOL * (a2 * sp * n + k2 * sr * m);
+        return b < (long double)DBL_MAX ? (double)b : DBL_MAX;
+    }
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
