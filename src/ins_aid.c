@@ -8,7 +8,6 @@
 
 #include "linalg.h"
 #include "se23_math.h"
-#include "trig.h"
 
 /* ins->work = the user's state of ins->g. */
 static se23_status_t user_state(se23_ins_t *ins)
@@ -92,10 +91,7 @@ int se23_ins_zupt(se23_ins_t *ins, const se23_imu_sample_t *s, int rest)
     return 1;
 }
 
-/* P's rows and columns of block b (first index) zeroed, and its diagonal
- * block set to R^T diag(s^2) R: the covariance, in the body-frame error of
- * gauss.h, of a nav-frame quantity known to 1-sigma s per axis. */
-static void reset_block(se23_gauss_t *g, int b, const se23_vec3_t *s)
+void se23_ins_reset_block(se23_gauss_t *g, int b, const se23_vec3_t *s)
 {
     se23_mat3_t C, RtC, B;
     int i, j;
@@ -115,8 +111,7 @@ static void reset_block(se23_gauss_t *g, int b, const se23_vec3_t *s)
     }
 }
 
-/* The antenna's rate term: w = last sample's gyro + bias estimate. */
-static void body_rate(const se23_ins_t *ins, se23_vec3_t *w)
+void se23_ins_body_rate(const se23_ins_t *ins, se23_vec3_t *w)
 {
     se23_v3_axpy(&ins->last.w_ib_b, SE23_R(1), &ins->work.b_g, w);
 }
@@ -136,13 +131,13 @@ static se23_ins_verdict_t gate_reset(se23_ins_t *ins, const se23_ins_gnss_t *fix
     }
     se23_m3_mul_v3(&ins->work.T.R, &ins->cfg.lever_b, &Rl);
     se23_v3_axpy(&fix->p_n, SE23_R(-1), &Rl, &ins->work.T.p);
-    reset_block(&ins->work, SE23_IDX_RHO, &fix->sigma_p);
+    se23_ins_reset_block(&ins->work, SE23_IDX_RHO, &fix->sigma_p);
     if (fix->has_vel != 0) {
-        body_rate(ins, &w);
+        se23_ins_body_rate(ins, &w);
         se23_v3_cross(&w, &ins->cfg.lever_b, &wl);
         se23_m3_mul_v3(&ins->work.T.R, &wl, &Rwl);
         se23_v3_axpy(&fix->v_n, SE23_R(-1), &Rwl, &ins->work.T.v);
-        reset_block(&ins->work, SE23_IDX_NU, &fix->sigma_v);
+        se23_ins_reset_block(&ins->work, SE23_IDX_NU, &fix->sigma_v);
     }
     if (commit(ins) != SE23_OK) {
         se23_ins_count(&ins->c.filter_errors);
@@ -153,71 +148,6 @@ static se23_ins_verdict_t gate_reset(se23_ins_t *ins, const se23_ins_gnss_t *fix
     se23_ins_count(&ins->c.gate_resets);
     ins->status |= SE23_INS_ST_GATE_RESET;
     return SE23_INS_RESET;
-}
-
-/*
- * The heading from the GNSS course (ins.h, "Alignment"): the attitude is
- * turned about the nav vertical so that body x points along the fix's
- * horizontal velocity, the velocity is set to the fix's, and the
- * covariance follows: with r = R^T e_down (the vertical in the body error),
- * P <- T P T^T + D, T = I - r r^T on phi (the old heading error dropped)
- * and 0 on nu, D = s^2 r r^T on phi (s^2 = course_sigma^2 + sigma_v^2 /
- * speed^2) and the fix's velocity covariance on nu: PSD as a congruence
- * plus PSD terms. work holds the user's state; the caller commits it (and
- * then clears SE23_INS_ST_HEADING_UNKNOWN).
- */
-static void course_heading(se23_ins_t *ins, const se23_ins_gnss_t *fix, se23_real_t speed)
-{
-    se23_gauss_t *g = &ins->work;
-    const se23_real_t sv = se23_fabs(fix->sigma_v.v[0]) + se23_fabs(fix->sigma_v.v[1]);
-    const se23_real_t sh = SE23_R(0.5) * sv / speed;
-    const se23_real_t s2 = (ins->align.course_sigma * ins->align.course_sigma) + (sh * sh);
-    const se23_real_t d = se23_atan2(fix->v_n.v[1], fix->v_n.v[0]) -
-                          se23_atan2(g->T.R.m[1][0], g->T.R.m[0][0]);
-    se23_real_t sn, c;
-    se23_sincos(d, &sn, &c);
-    se23_mat3_t Rz, R;
-    se23_vec3_t r, w, wl, Rwl;
-    int i, j, k;
-    se23_m3_identity(&Rz);
-    Rz.m[0][0] = c;
-    Rz.m[0][1] = -sn;
-    Rz.m[1][0] = sn;
-    Rz.m[1][1] = c;
-    se23_m3_mul(&Rz, &g->T.R, &R);
-    g->T.R = R;
-    for (i = 0; i < 3; ++i) {
-        r.v[i] = R.m[2][i];
-    }
-    /* rows, then columns, of phi times T = I - r r^T */
-    for (j = 0; j < g->n; ++j) {
-        se23_real_t dot = SE23_R(0);
-        for (k = 0; k < 3; ++k) {
-            dot += r.v[k] * g->P.m[se23_ins_idx(SE23_IDX_PHI + k, j)];
-        }
-        for (i = 0; i < 3; ++i) {
-            g->P.m[se23_ins_idx(SE23_IDX_PHI + i, j)] -= r.v[i] * dot;
-        }
-    }
-    for (i = 0; i < g->n; ++i) {
-        se23_real_t dot = SE23_R(0);
-        for (k = 0; k < 3; ++k) {
-            dot += g->P.m[se23_ins_idx(i, SE23_IDX_PHI + k)] * r.v[k];
-        }
-        for (j = 0; j < 3; ++j) {
-            g->P.m[se23_ins_idx(i, SE23_IDX_PHI + j)] -= dot * r.v[j];
-        }
-    }
-    for (i = 0; i < 3; ++i) {
-        for (j = 0; j < 3; ++j) {
-            g->P.m[se23_ins_idx(SE23_IDX_PHI + i, SE23_IDX_PHI + j)] += s2 * r.v[i] * r.v[j];
-        }
-    }
-    body_rate(ins, &w);
-    se23_v3_cross(&w, &ins->cfg.lever_b, &wl);
-    se23_m3_mul_v3(&R, &wl, &Rwl);
-    se23_v3_axpy(&fix->v_n, SE23_R(-1), &Rwl, &g->T.v);
-    reset_block(g, SE23_IDX_NU, &fix->sigma_v);
 }
 
 /* Nonzero if nis fails the configured gate. */
@@ -245,7 +175,7 @@ se23_ins_verdict_t se23_ins_fuse_gnss(se23_ins_t *ins, const se23_ins_gnss_t *fi
         const se23_real_t speed = se23_sqrt((fix->v_n.v[0] * fix->v_n.v[0]) +
                                             (fix->v_n.v[1] * fix->v_n.v[1]));
         if ((fix->has_vel != 0) && (speed >= ins->align.course_speed)) {
-            course_heading(ins, fix, speed);
+            se23_ins_course_heading(ins, fix, speed);
             course = 1;
         }
         use_vel = 0;
@@ -259,7 +189,7 @@ se23_ins_verdict_t se23_ins_fuse_gnss(se23_ins_t *ins, const se23_ins_gnss_t *fi
         out = gated(ins, nis_p);
     }
     if ((st == SE23_OK) && (out == 0) && (use_vel != 0)) {
-        body_rate(ins, &w);
+        se23_ins_body_rate(ins, &w);
         diag_cov(sv->v[0], sv->v[1], sv->v[2], &C);
         st = se23_meas_vel_nav_lever(&ins->work.T, &w, &ins->cfg.lever_b, &fix->v_n, &C,
                                      &ins->meas);

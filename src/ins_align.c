@@ -6,6 +6,7 @@
 #include "linalg.h"
 #include "se23/align.h"
 #include "se23_math.h"
+#include "trig.h"
 
 /* The statuses of se23_ins_align for a, SE23_OK if it is usable. */
 static se23_status_t align_check(const se23_ins_t *ins, const se23_ins_align_t *a)
@@ -245,4 +246,69 @@ se23_ins_verdict_t se23_ins_align_sample(se23_ins_t *ins, int64_t t_ns,
         ins->status |= SE23_INS_ST_HEADING_UNKNOWN;
     }
     return SE23_INS_USED;
+}
+
+/*
+ * The heading from the GNSS course (ins.h, "Alignment"): the attitude is
+ * turned about the nav vertical so that body x points along the fix's
+ * horizontal velocity, the velocity is set to the fix's, and the
+ * covariance follows: with r = R^T e_down (the vertical in the body error),
+ * P <- T P T^T + D, T = I - r r^T on phi (the old heading error dropped)
+ * and 0 on nu, D = s^2 r r^T on phi (s^2 = course_sigma^2 + sigma_v^2 /
+ * speed^2) and the fix's velocity covariance on nu: PSD as a congruence
+ * plus PSD terms. work holds the user's state; the caller commits it (and
+ * then clears SE23_INS_ST_HEADING_UNKNOWN).
+ */
+void se23_ins_course_heading(se23_ins_t *ins, const se23_ins_gnss_t *fix, se23_real_t speed)
+{
+    se23_gauss_t *g = &ins->work;
+    const se23_real_t sv = se23_fabs(fix->sigma_v.v[0]) + se23_fabs(fix->sigma_v.v[1]);
+    const se23_real_t sh = SE23_R(0.5) * sv / speed;
+    const se23_real_t s2 = (ins->align.course_sigma * ins->align.course_sigma) + (sh * sh);
+    const se23_real_t d = se23_atan2(fix->v_n.v[1], fix->v_n.v[0]) -
+                          se23_atan2(g->T.R.m[1][0], g->T.R.m[0][0]);
+    se23_real_t sn, c;
+    se23_sincos(d, &sn, &c);
+    se23_mat3_t Rz, R;
+    se23_vec3_t r, w, wl, Rwl;
+    int i, j, k;
+    se23_m3_identity(&Rz);
+    Rz.m[0][0] = c;
+    Rz.m[0][1] = -sn;
+    Rz.m[1][0] = sn;
+    Rz.m[1][1] = c;
+    se23_m3_mul(&Rz, &g->T.R, &R);
+    g->T.R = R;
+    for (i = 0; i < 3; ++i) {
+        r.v[i] = R.m[2][i];
+    }
+    /* rows, then columns, of phi times T = I - r r^T */
+    for (j = 0; j < g->n; ++j) {
+        se23_real_t dot = SE23_R(0);
+        for (k = 0; k < 3; ++k) {
+            dot += r.v[k] * g->P.m[se23_ins_idx(SE23_IDX_PHI + k, j)];
+        }
+        for (i = 0; i < 3; ++i) {
+            g->P.m[se23_ins_idx(SE23_IDX_PHI + i, j)] -= r.v[i] * dot;
+        }
+    }
+    for (i = 0; i < g->n; ++i) {
+        se23_real_t dot = SE23_R(0);
+        for (k = 0; k < 3; ++k) {
+            dot += g->P.m[se23_ins_idx(i, SE23_IDX_PHI + k)] * r.v[k];
+        }
+        for (j = 0; j < 3; ++j) {
+            g->P.m[se23_ins_idx(i, SE23_IDX_PHI + j)] -= dot * r.v[j];
+        }
+    }
+    for (i = 0; i < 3; ++i) {
+        for (j = 0; j < 3; ++j) {
+            g->P.m[se23_ins_idx(SE23_IDX_PHI + i, SE23_IDX_PHI + j)] += s2 * r.v[i] * r.v[j];
+        }
+    }
+    se23_ins_body_rate(ins, &w);
+    se23_v3_cross(&w, &ins->cfg.lever_b, &wl);
+    se23_m3_mul_v3(&R, &wl, &Rwl);
+    se23_v3_axpy(&fix->v_n, SE23_R(-1), &Rwl, &g->T.v);
+    se23_ins_reset_block(g, SE23_IDX_NU, &fix->sigma_v);
 }

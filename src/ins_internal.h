@@ -4,12 +4,14 @@
  *        between its sources:
  *          ins.c         setup, init, state output, sample screening
  *          ins_outage.c  over-gap samples, outage carry-across
- *          ins_step.c    one accepted sample: prediction, detector,
- *                        zero-velocity updates, preintegrated factor
+ *          ins_rest.c    the rest decision: stationary detector and the
+ *                        filter's own gravity test
+ *          ins_step.c    one accepted sample: prediction, zero-velocity
+ *                        updates, preintegrated factor
  *          ins_aid.c     measurement updates in the user's coordinates,
  *                        GNSS gate and gate recovery
  *          ins_delay.c   sample ring, snapshots, delayed fixes
- *          ins_align.c   static alignment
+ *          ins_align.c   static alignment, heading from the GNSS course
  */
 #ifndef SE23_INS_INTERNAL_H
 #define SE23_INS_INTERNAL_H
@@ -76,11 +78,37 @@ void se23_ins_factor_add(se23_ins_t *ins, const se23_imu_sample_t *prev,
 void se23_ins_factor_reset(se23_ins_t *ins);
 
 /**
+ * The rest updates sample s (dt_ns after the last accepted one) calls for:
+ * SE23_INS_REST_NONE (moving, or no ZUPT configured), SE23_INS_REST_ZUPT,
+ * or SE23_INS_REST_ZARU once the rest has lasted zaru_after. Feeds the
+ * detector (ins_rest.c).
+ */
+int se23_ins_rest_level(se23_ins_t *ins, const se23_imu_sample_t *s, int64_t dt_ns);
+
+/**
  * The zero-velocity update after raw sample s, and the zero-rate update
  * too if rest is SE23_INS_REST_ZARU (and ZARU configured). Returns 1 on
  * success.
  */
 int se23_ins_zupt(se23_ins_t *ins, const se23_imu_sample_t *s, int rest);
+
+/**
+ * P's rows and columns of block b (first index) zeroed, and its diagonal
+ * block set to R^T diag(s^2) R: the covariance, in the body-frame error of
+ * gauss.h, of a nav-frame quantity known to 1-sigma s per axis.
+ */
+void se23_ins_reset_block(se23_gauss_t *g, int b, const se23_vec3_t *s);
+
+/** The antenna's rate term: w = last sample's gyro + bias estimate. */
+void se23_ins_body_rate(const se23_ins_t *ins, se23_vec3_t *w);
+
+/**
+ * The heading from the GNSS course of fix (speed its horizontal speed) on
+ * the user's state in ins->work (ins_align.c); the caller commits it. Out
+ * of se23_ins_fuse_gnss's frame: its work is off the stack before the
+ * updates that follow.
+ */
+void se23_ins_course_heading(se23_ins_t *ins, const se23_ins_gnss_t *fix, se23_real_t speed);
 
 /**
  * Fuses fix now, at the current state (gate, gate recovery, counters,
