@@ -124,6 +124,11 @@ static int in_support(const se23_real_t *P, int n, int j)
  *    g = (m + 1) eps / (1 - (m + 1) eps): a perturbation of at most
  *    e = g (n + m) max_i M_ii, which reaches P+ directly and through
  *    S^-1 and C (K dS K^T, K dC^T): (1 + |K|)^2 e (here 4 times that);
+ *  - forming C = P H^T and S = H C + R (n-term sums, gn = (n + 1) eps /
+ *    (1 - (n + 1) eps)): |dC| <= gn |P| |H|^T and |dS| <= gn (|H| |C| +
+ *    |R| + |H| |P| |H|^T), entrywise, which M's diagonal does not bound
+ *    when H's entries cancel over correlated states; they reach P+ as
+ *    dC K^T + K dC^T - K dS K^T, added to e;
  *  - the inputs' own tolerance: P and R are accepted when PSD within
  *    SE23_CFG_COV_TOL of their largest variance, and P+ = (I - K H) P
  *    (I - K H)^T + K R K^T carries a defect dP, dR of that size as
@@ -136,28 +141,40 @@ static double update_bound(const se23_gauss_t *g, const se23_meas_t *y)
     const int n = g->n, m = y->m;
     const double gam = (m + 1) * FZ_EPS / (1.0 - (m + 1) * FZ_EPS);
     const double sp = fz_max_diag(g->P.m, n, 15), sr = fz_max_diag(y->R, m, 9);
-    long double C[15][9], S[9][9], K[15][9], k2 = 0.0L, a2 = 0.0L;
+    const long double gn = (n + 1) * FZ_EPS / (1.0L - (n + 1) * FZ_EPS);
+    long double C[15][9], Ca[15][9], S[9][9], K[15][9], k2 = 0.0L, a2 = 0.0L;
+    long double ca2 = 0.0L, sb2 = 0.0L, sa2 = 0.0L, ef;
     double mx = sp;
     int r, q, i, j;
-    for (i = 0; i < n; ++i) { /* C = P H^T */
+    for (i = 0; i < n; ++i) { /* C = P H^T, Ca = |P| |H|^T */
         for (r = 0; r < m; ++r) {
-            long double c = 0.0L;
+            long double c = 0.0L, a = 0.0L;
             for (j = 0; j < n; ++j) {
                 c += (long double)g->P.m[15 * i + j] * y->H[15 * r + j];
+                a += fabsl((long double)g->P.m[15 * i + j] * y->H[15 * r + j]);
             }
             C[i][r] = c;
+            Ca[i][r] = a;
+            ca2 += a * a;
         }
     }
     for (r = 0; r < m; ++r) { /* S = H C + R (upper triangle of R) */
         for (q = 0; q < m; ++q) {
             long double x = (long double)y->R[r <= q ? 9 * r + q : 9 * q + r];
+            long double b = fabsl(x), h = 0.0L;
             for (j = 0; j < n; ++j) {
                 x += (long double)y->H[15 * r + j] * C[j][q];
+                b += fabsl((long double)y->H[15 * r + j] * C[j][q]);
+                h += fabsl((long double)y->H[15 * r + j]) * Ca[j][q];
             }
             S[r][q] = x;
+            sb2 += b * b;
+            sa2 += h * h;
         }
         mx = fmax(mx, fabs((double)S[r][r]));
     }
+    /* forming C and S: |dC| <= gn A, |dS| <= gn (|H| |C| + |R| + |H| A) */
+    ef = gn * (2.0L * sqrtl(ca2) + sqrtl(sb2) + sqrtl(sa2));
     /* K = C S^-1: Gauss-Jordan on [S | C^T] (K^T = S^-1 C^T, S symmetric) */
     {
         long double A[9][9 + 15];
@@ -221,7 +238,7 @@ static double update_bound(const se23_gauss_t *g, const se23_meas_t *y)
      * (src/kalman_parts.c states only the first term, which does not hold
      * for a nearly singular S: R = 0 and rows that pin a state jointly) */
     {
-        const long double b = 4.0L * gam * (n + m) * mx * (1.0L + 2.0L * sqrtl(k2) + k2) +
+        const long double b = 4.0L * (gam * (n + m) * mx + ef) * (1.0L + 2.0L * sqrtl(k2) + k2) +
                               SE23_CFG_COV_TOL * (a2 * sp * n + k2 * sr * m);
         return b < (long double)DBL_MAX ? (double)b : DBL_MAX;
     }
