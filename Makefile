@@ -5,7 +5,8 @@
 #   make lib     the library alone, host, both precisions (no CMake needed)
 #   make cross   the library for Cortex-M4F (float) and Cortex-M7 (double)
 #   make bench   host benchmark: filter steps vs a dense Eigen reference
-#                (ns and callgrind instructions per call), routines
+#                (ns and callgrind instructions per call), routines;
+#                make bench-march: the same built for MARCH (x86-64-v3)
 #   make fuzz    libFuzzer targets (tests/fuzz), FUZZ_TIME seconds each
 #   make clean   removes $(BUILD): the tree is then as cloned
 #

@@ -2,7 +2,7 @@
 # of a filter against a dense Eigen reference in the same process, wall
 # time and callgrind instructions, then instructions per routine; float and
 # double builds. Included by the top-level Makefile.
-.PHONY: bench bench-bins
+.PHONY: bench bench-bins bench-march
 BENCH_CFLAGS := $(WARN) -O2 -Iinclude -Itests/support
 BENCH_CXXFLAGS := -std=c++17 -Wall -Wextra -Wpedantic -Werror -O2 -Iinclude \
                   -isystem /usr/include/eigen3
@@ -31,5 +31,13 @@ bench-bins: $(BUILD)/bench-double/se23-bench $(BUILD)/bench-float/se23-bench
 
 bench: deps bench-bins
 	@CC="$(CC)" CXX="$(CXX)" \
-	    BENCH_FLAGS="library $(filter-out -W% -I%,$(LIB_CFLAGS)), reference $(filter-out -W% -I% -isystem /usr/include/eigen3,$(BENCH_CXXFLAGS)), no -march" \
+	    BENCH_FLAGS="library $(filter-out -W% -I%,$(LIB_CFLAGS)), reference $(filter-out -W% -I% -isystem /usr/include/eigen3,$(BENCH_CXXFLAGS))$(if $(BENCH_MARCH),, no -march)" \
 	    sh tools/bench/run.sh $(BUILD)
+
+# make bench-march [MARCH=x86-64-v3]: the same benchmark with the library
+# and the reference both built for MARCH (x86-64-v3: AVX2 and fused
+# multiply-add, every x86-64 since 2013-2015), in $(BUILD)/march-MARCH.
+MARCH ?= x86-64-v3
+bench-march: deps
+	@$(MAKE) --no-print-directory bench BUILD=$(BUILD)/march-$(MARCH) BENCH_MARCH=$(MARCH) \
+	    LIB_CFLAGS='$(LIB_CFLAGS) -march=$(MARCH)' BENCH_CXXFLAGS='$(BENCH_CXXFLAGS) -march=$(MARCH)'
