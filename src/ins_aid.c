@@ -122,7 +122,7 @@ void se23_ins_body_rate(const se23_ins_t *ins, se23_vec3_t *w)
  * and no correlation with the rest; attitude and biases kept. Dropping
  * correlations of a PSD matrix block-diagonally keeps it PSD.
  */
-static se23_ins_verdict_t gate_reset(se23_ins_t *ins, const se23_ins_gnss_t *fix)
+se23_ins_verdict_t se23_ins_gate_reset(se23_ins_t *ins, const se23_ins_gnss_t *fix)
 {
     se23_vec3_t Rl, w, wl, Rwl;
     if (user_state(ins) != SE23_OK) {
@@ -208,7 +208,7 @@ se23_ins_verdict_t se23_ins_fuse_gnss(se23_ins_t *ins, const se23_ins_gnss_t *fi
         ins->status |= SE23_INS_ST_GNSS_GATED;
         ins->gated_run++;
         if ((ins->cfg.gate_recover > 0) && (ins->gated_run >= ins->cfg.gate_recover)) {
-            return gate_reset(ins, fix);
+            return se23_ins_gate_reset(ins, fix);
         }
         return SE23_INS_GATED;
     }

@@ -8,6 +8,8 @@
  *                        filter's own gravity test
  *          ins_step.c    one accepted sample: prediction, zero-velocity
  *                        updates, preintegrated factor
+ *          ins_gap.c     lost samples: sub-intervals, interpolated
+ *                        readings, the prediction over them
  *          ins_aid.c     measurement updates in the user's coordinates,
  *                        GNSS gate and gate recovery
  *          ins_delay.c   sample ring, snapshots, delayed fixes
@@ -48,6 +50,13 @@ void se23_ins_start(se23_ins_t *ins, int64_t t_ns, const se23_gauss_t *g);
  * failure (counted in filter_errors). Returns 1 on success.
  */
 int se23_ins_predict(se23_ins_t *ins, const se23_imu_sample_t *s);
+
+/**
+ * The prediction over sample s after the reading ins->last, in
+ * se23_ins_gap_steps sub-intervals (ins_gap.c); on a failure the state is
+ * restored (ins->work holds the copy). Returns 1 on success.
+ */
+int se23_ins_predict_interval(se23_ins_t *ins, const se23_imu_sample_t *s);
 
 /**
  * The whole step of an accepted sample at time t_ns: prediction, then the
@@ -109,6 +118,16 @@ void se23_ins_body_rate(const se23_ins_t *ins, se23_vec3_t *w);
  * updates that follow.
  */
 void se23_ins_course_heading(se23_ins_t *ins, const se23_ins_gnss_t *fix, se23_real_t speed);
+
+/**
+ * Gate recovery after gate_recover gated fixes in a row (ins_aid.c):
+ * position, and velocity if fix has it, reset to the fix. Returns
+ * SE23_INS_RESET or SE23_INS_FAILED. External linkage keeps GCC -O2 from
+ * inlining it into se23_ins_fuse_gnss (it inlines a static function
+ * called once), whose frame holds the Kalman updates: its work is then
+ * not in that frame (make gates-target shows the frames).
+ */
+se23_ins_verdict_t se23_ins_gate_reset(se23_ins_t *ins, const se23_ins_gnss_t *fix);
 
 /**
  * Fuses fix now, at the current state (gate, gate recovery, counters,

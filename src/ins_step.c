@@ -2,84 +2,9 @@
  * preintegrated factor; see ins.h. */
 #include "ins_internal.h"
 
-#include "linalg.h"
-
-/*
- * Sub-intervals of sample s after the reading prev (ins.h, "Lost
- * samples"): n = round(dt / dt_nominal), at most SE23_INS_GAP_STEPS; 1
- * without a reading at the interval's start (prev->dt is 0 before the
- * first accepted sample of a state, in the alignment's last sample, and
- * after an outage or a clock step).
- */
-int se23_ins_gap_steps(const se23_ins_t *ins, const se23_imu_sample_t *prev,
-                       const se23_imu_sample_t *s)
-{
-    const se23_real_t r = (s->dt / ins->cfg.dt_nominal) + SE23_R(0.5);
-    if ((prev->dt <= SE23_R(0)) || (r < SE23_R(2))) {
-        return 1;
-    }
-    return (r >= (se23_real_t)SE23_INS_GAP_STEPS) ? SE23_INS_GAP_STEPS : (int)r;
-}
-
-/*
- * u = the reading of sub-interval j (1..n) of s: linear in time between
- * prev (at the interval's start) and s (at its end), u(t) = prev + (t -
- * t_prev) / dt (s - prev), taken at the sub-interval's end and held over
- * it like a received sample; u = s for j = n.
- */
-void se23_ins_gap_sample(const se23_imu_sample_t *prev, const se23_imu_sample_t *s, int j,
-                         int n, se23_imu_sample_t *u)
-{
-    *u = *s;
-    if (j < n) {
-        const se23_real_t a = (se23_real_t)j / (se23_real_t)n;
-        se23_vec3_t dw, df;
-        se23_v3_axpy(&s->w_ib_b, SE23_R(-1), &prev->w_ib_b, &dw);
-        se23_v3_axpy(&s->f_b, SE23_R(-1), &prev->f_b, &df);
-        se23_v3_axpy(&prev->w_ib_b, a, &dw, &u->w_ib_b);
-        se23_v3_axpy(&prev->f_b, a, &df, &u->f_b);
-    }
-    u->dt = s->dt / (se23_real_t)n;
-}
-
-/* The prediction over sample s after the reading ins->last, in
- * se23_ins_gap_steps sub-intervals; on a failure the state is restored
- * (ins->work holds the copy). Returns 1 on success. */
-static int predict_interval(se23_ins_t *ins, const se23_imu_sample_t *s)
-{
-    const int n = se23_ins_gap_steps(ins, &ins->last, s);
-    se23_imu_sample_t u;
-    int j;
-    if (n == 1) {
-        return se23_ins_predict(ins, s);
-    }
-    ins->work = ins->g;
-    for (j = 1; j <= n; ++j) {
-        se23_ins_gap_sample(&ins->last, s, j, n, &u);
-        if (se23_ins_predict(ins, &u) == 0) {
-            ins->g = ins->work;
-            return 0;
-        }
-    }
-    return 1;
-}
-
-int se23_ins_predict(se23_ins_t *ins, const se23_imu_sample_t *s)
-{
-    /* In place (gauss.h: outputs may alias inputs; nothing written on error). */
-    if (se23_gauss_predict(&ins->model, &ins->g, s, &ins->cfg.noise, SE23_INPUT_JAC_EXACT,
-                           &ins->g) != SE23_OK) {
-        if (ins->replaying == 0) {
-            se23_ins_count(&ins->c.filter_errors);
-        }
-        return 0;
-    }
-    return 1;
-}
-
 int se23_ins_step(se23_ins_t *ins, int64_t t_ns, const se23_imu_sample_t *s, int rest)
 {
-    if (predict_interval(ins, s) == 0) {
+    if (se23_ins_predict_interval(ins, s) == 0) {
         return 0;
     }
     ins->t_ns = t_ns;
