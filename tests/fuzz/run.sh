@@ -13,7 +13,11 @@
 #       `make check` (tests/check.d/75-fuzz.sh), `make fuzz-smoke`: replays
 #       every input of tests/fuzz/corpus/<target>, then RUNS runs from a
 #       fixed seed and an empty corpus under FZ/smoke; writes nothing
-#       outside FZ. Exits 1 if any target failed.
+#       outside FZ. Exits 1 if any target failed. The runs are the same
+#       on every run and machine (for the same arithmetic): -use_cmp=0,
+#       because libFuzzer's comparison-driven mutations take the operands
+#       the target compares, addresses included, which ASLR changes from
+#       run to run (two smoke runs of one binary reached different inputs).
 #
 # BIN: binaries to run (default: all of FZ/bin). <target> is the binary's
 # name without fuzz_ and -double / -float: both precisions share a corpus.
@@ -74,7 +78,7 @@ smoke)
             else
                 set -- "$work/corpus"
             fi
-            "$bin" -runs="$N" -seed=1 -timeout=60 -print_final_stats=1 \
+            "$bin" -runs="$N" -seed=1 -use_cmp=0 -timeout=60 -print_final_stats=1 \
                 -artifact_prefix="$work/" "$@" >"$log" 2>&1 || ok=0
         fi
         runs=$(stat number_of_executed_units "$log" 2>/dev/null)
