@@ -3,7 +3,8 @@
 # -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all. Here a
 # smoke run of each (tests/fuzz/run.sh smoke): every regression input of
 # tests/fuzz/corpus/<target> replayed, then FUZZ_RUNS runs from a fixed seed
-# and an empty corpus under $BUILD/fuzz/smoke. The oracle can fail: with
+# and an empty corpus under $BUILD/fuzz/smoke, the same inputs on every run
+# (-use_cmp=0, tests/fuzz/run.sh). The oracle can fail: with
 # FUZZ_STRICT_PSD=1 the kept input of the one known open finding (fuzz.h,
 # README "Fuzzing") must abort the float kalman target.
 FZ="$BUILD/fuzz"
