@@ -34,4 +34,17 @@ else
             grep -q "fuzz oracle (float build)" "$FZ/strict.log"
     }
     check fuzz-oracle-can-fail fz_strict_fails
+    # The smoke runs are reproducible: two runs of the kalman target (which
+    # compares addresses) reach the same coverage, features and corpus.
+    fz_reached() {
+        sh tests/fuzz/run.sh smoke "$FZ" "${FUZZ_RUNS:-20000}" "$FZ/bin/fuzz_kalman-double" \
+            >/dev/null &&
+            sed -n 's/.*DONE *\(cov: [0-9]* ft: [0-9]* corp: [0-9]*\).*/\1/p' \
+                "$FZ/smoke/fuzz_kalman-double/log"
+    }
+    fz_same_twice() {
+        fz_a=$(fz_reached) && fz_b=$(fz_reached) && [ -n "$fz_a" ] && [ "$fz_a" = "$fz_b" ] ||
+            { echo "two smoke runs reached '$fz_a' and '$fz_b'"; return 1; }
+    }
+    check fuzz-smoke-reproducible fz_same_twice
 fi
