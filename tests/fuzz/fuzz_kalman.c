@@ -173,7 +173,7 @@ static double update_bound(const se23_gauss_t *g, const se23_meas_t *y)
         }
         mx = fmax(mx, fabs((double)S[r][r]));
     }
-    /* forming C and S: |dC| <= gn A, |dS| <= gn (|H| |C| + |R| + |H| A) */
+    /* forming C and S: |dC| <= gn Ca, |dS| <= gn (|H| |C| + |R| + |H| Ca) */
     ef = gn * (2.0L * sqrtl(ca2) + sqrtl(sb2) + sqrtl(sa2));
     /* K = C S^-1: Gauss-Jordan on [S | C^T] (K^T = S^-1 C^T, S symmetric) */
     {
@@ -222,12 +222,12 @@ static double update_bound(const se23_gauss_t *g, const se23_meas_t *y)
             }
         }
     }
-    for (i = 0; i < n; ++i) { /* |(I - K H) E|_F^2, E the support of P */
-        for (j = 0; j < n; ++j) {
+    for (j = 0; j < n; ++j) { /* |(I - K H) E|_F^2, E the support of P */
+        if (!in_support(g->P.m, n, j)) {
+            continue;
+        }
+        for (i = 0; i < n; ++i) {
             long double x = (i == j) ? 1.0L : 0.0L;
-            if (!in_support(g->P.m, n, j)) {
-                continue;
-            }
             for (r = 0; r < m; ++r) {
                 x -= K[i][r] * y->H[15 * r + j];
             }
