@@ -9,6 +9,8 @@
 #   make soak        10^7 filter steps per precision, aided and unaided (se23-soak)
 #   make demo-walk   a real foot-mounted walk (CSV) through the library's filter:
 #                    loop-closure error, distance, stance phases, plots
+#   make walk-misalign  the walk's closure against a misalignment of the
+#                    accelerometer's triad (MISALIGN="rx,ry,rz ..." degrees)
 #   make bench-ins   se23-ins throughput on a recorded log of 1.2 M IMU samples
 
 H := $(BUILD)/harness
@@ -41,7 +43,7 @@ H_HDRS := $(wildcard tools/lcm/*.h tools/sim/*.h tools/ins/*.h tools/report/*.h 
 H_LIB := $(BUILD)/lib-host-double/libse23.a
 h_objs = $(patsubst %.c,$(H)/obj/%.o,$(1))
 
-.PHONY: harness demo demo-live demo-walk bench-ins soak
+.PHONY: harness demo demo-live demo-walk walk-misalign bench-ins soak
 
 harness: $(H_BIN)/se23-sim $(H_BIN)/se23-ins $(H_BIN)/se23-report $(H_BIN)/se23-corrupt \
          $(H_BIN)/se23-simcheck $(H_BIN)/se23-walk $(H_BIN)/se23-ins-float \
@@ -121,6 +123,11 @@ demo-walk:
 	@sh tools/install-deps.sh $(BUILD)
 	@$(MAKE) -s --no-print-directory harness BUILD=$(BUILD)
 	@sh tools/walk/demo-walk.sh $(H)
+
+walk-misalign:
+	@sh tools/install-deps.sh $(BUILD)
+	@$(MAKE) -s --no-print-directory harness BUILD=$(BUILD)
+	@sh tools/walk/misalign-sweep.sh $(H) $(MISALIGN)
 
 demo-live:
 	@sh tools/install-deps.sh $(BUILD)

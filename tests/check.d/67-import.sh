@@ -234,7 +234,9 @@ check import-crlf i_crlf
 i_usage() {
     for iu_args in "--axes x,x,z" "--axes x,y" "--axes x,y,w" "--axes x,y,z,x" "--axes +-x,y,z" \
         "--gyro-cols 1,2,3" "--accel-cols 5,6" "--time-col 0" "--time-unit h" \
-        "--gyro-unit rpm" "--accel-unit mg" "--g 1" "--header -1" "--rate 0" "--out x.log"; do
+        "--gyro-unit rpm" "--accel-unit mg" "--g 1" "--header -1" "--rate 0" "--out x.log" \
+        "--accel-misalign 8,0,7" "--accel-misalign 1,2" "--accel-misalign 1,2,3,4" \
+        "--accel-misalign nan,0,0" "--accel-misalign 0,x,0"; do
         # shellcheck disable=SC2086
         $IVG "$IB/se23-import" --out "file://$IW/usage.log?mode=w" $iu_args "$I_WALK" \
             >"$IW/usage.out" 2>&1
@@ -263,6 +265,33 @@ i_units_axes() {
         grep -qx "first_accel -2.5 -1.5 -9.75" "$IW/units.back"
 }
 check import-units-axes-roundtrip i_units_axes
+
+# --accel-misalign rotates the accelerometer after --axes, not the gyro:
+# 10 degrees about z (the largest accepted) and 0.6,-0.8,0 (1 degree about
+# a tilted axis, Rodrigues' formula written out here), to 1e-12.
+i_misalign() {
+    printf '0,0.1,0.2,0.3,1.5,-2.5,9.75
+0.01,0.1,0.2,0.3,1.5,-2.5,9.75
+' >"$IW/mis.csv"
+    i_run mis 0 --header 0 --gyro-unit rad/s --accel-unit m/s2 --axes y,-x,-z \
+        --accel-misalign 0,0,10 && i_back mis samples=2 &&
+        grep -qx "first_omega 0.20000000000000001 -0.10000000000000001 -0.29999999999999999" \
+            "$IW/mis.back" &&
+        awk 'BEGIN { t = 10 * atan2(0, -1) / 180; x = -2.5; y = -1.5 }
+             $1 == "first_accel" { e = 0
+                 e += ($2 - (cos(t) * x - sin(t) * y))^2; e += ($3 - (sin(t) * x + cos(t) * y))^2
+                 e += ($4 + 9.75)^2; ok = (e < 1e-24) }
+             END { exit ok ? 0 : 1 }' "$IW/mis.back" || return 1
+    i_run mis 0 --header 0 --accel-unit m/s2 --accel-misalign 0.6,-0.8,0 && i_back mis &&
+        awk 'BEGIN { t = atan2(0, -1) / 180; n[1] = 0.6; n[2] = -0.8; n[3] = 0
+                 v[1] = 1.5; v[2] = -2.5; v[3] = 9.75
+                 c[1] = n[2] * v[3] - n[3] * v[2]; c[2] = n[3] * v[1] - n[1] * v[3]
+                 c[3] = n[1] * v[2] - n[2] * v[1]; d = n[1] * v[1] + n[2] * v[2] + n[3] * v[3]
+                 for (i = 1; i <= 3; i++) w[i] = v[i] * cos(t) + c[i] * sin(t) + n[i] * d * (1 - cos(t)) }
+             $1 == "first_accel" { ok = (($2 - w[1])^2 + ($3 - w[2])^2 + ($4 - w[3])^2 < 1e-24) }
+             END { exit ok ? 0 : 1 }' "$IW/mis.back"
+}
+check import-accel-misalign i_misalign
 i_unix_time() {
     printf 'x-io NGIMU\nrecorded 2023\n%s\n' "$I_HDR" >"$IW/unix.csv"
     printf '1700000000.123456789,1,2,3,0,0,1\n1700000000.126,1,2,3,0,0,1\n' >>"$IW/unix.csv"

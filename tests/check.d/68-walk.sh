@@ -38,3 +38,15 @@ w_weak_zupt() {
         ! "$WB/se23-walk" --max-closure 0.172 "$WW/weak.log"
 }
 check walk-closure-can-fail w_weak_zupt
+# The misalignment study (make walk-misalign, README "A real walk"): no
+# rotation gives the preset's closure of the run above; 0.5 degrees about
+# y takes more than 5 cm off it (0.064 m against 0.137 m).
+w_misalign() {
+    sh tools/walk/misalign-sweep.sh "$BUILD/harness" 0,0,0 0,0.5,0 >"$WW/misalign.txt" &&
+        cat "$WW/misalign.txt" &&
+        wm_ref=$(awk '$1 == "0,0,0" { print $2 }' "$WW/misalign.txt") &&
+        "$WB/se23-walk" "$WW/double.log" | grep -q "closure error *$wm_ref m 3D" &&
+        awk '$1 == "0,0,0" { a = $2 } $1 == "0,0.5,0" { b = $2 }
+             END { exit (a != "" && b != "" && a - b > 0.05) ? 0 : 1 }' "$WW/misalign.txt"
+}
+check walk-misalign-sweep w_misalign

@@ -40,7 +40,7 @@ typedef struct {
     const char *in;
     const char *out;
     const char *header;  /* "auto" or a number of lines */
-    const char *gyro_cols, *accel_cols, *axes;
+    const char *gyro_cols, *accel_cols, *axes, *accel_misalign;
     int64_t time_col, columns, max_messages;
     int time_unit, gyro_unit, accel_unit;
     double g, rate, gyro_range, accel_range;
@@ -110,6 +110,9 @@ static void usage(FILE *f)
             "  --axes MAP             signed permutation applied to both sensors after\n"
             "                         the units: output x,y,z = the input axes listed,\n"
             "                         e.g. x,-y,-z or y,x,-z (x,y,z)\n"
+            "  --accel-misalign RX,RY,RZ  rotation vector [deg] applied to the accelerometer\n"
+            "                         after --axes: its triad's misalignment against the\n"
+            "                         gyroscope's, from a calibration (0,0,0; at most 10)\n"
             "  --gyro-range R         |value| >= R counts as clipped, in the INPUT unit\n"
             "                         of --gyro-unit (0: no check)\n"
             "  --accel-range R        the same for the accelerometer (0: no check)\n"
@@ -132,6 +135,7 @@ static void defaults(opts_t *o)
     o->gyro_cols = "2,3,4";
     o->accel_cols = "5,6,7";
     o->axes = "x,y,z";
+    o->accel_misalign = "0,0,0";
     o->time_col = 1;
     o->max_messages = 10;
     o->time_unit = 0;
@@ -189,6 +193,10 @@ static int setup(importer_t *im)
     if (row_parse_axes(o->axes, m->perm, m->sign) != 0) {
         return bad("--axes (a signed permutation of x,y,z)", o->axes);
     }
+    if (row_parse_misalign(o->accel_misalign, m->accel_rot) != 0) {
+        return bad("--accel-misalign (rx,ry,rz in degrees, at most 10 in all)",
+                   o->accel_misalign);
+    }
     if (o->columns < 0 || o->columns > ROW_COLS_MAX || o->max_messages < 0) {
         return bad("--columns or --max-messages", "(negative or too large)");
     }
@@ -238,6 +246,7 @@ static int parse_args(int argc, char **argv, importer_t *im)
         {"--accel-unit", HOPT_CHOICE, &o->accel_unit, 0, 0, find_accel_unit},
         {"--g", HOPT_DOUBLE, &o->g, 9.7, 9.9, NULL},
         {"--axes", HOPT_STR, &o->axes, 0, 0, NULL},
+        {"--accel-misalign", HOPT_STR, &o->accel_misalign, 0, 0, NULL},
         {"--gyro-range", HOPT_DOUBLE, &o->gyro_range, 0.0, inf, NULL},
         {"--accel-range", HOPT_DOUBLE, &o->accel_range, 0.0, inf, NULL},
         {"--rate", HOPT_DOUBLE, &o->rate, 1e-3, 1e9, NULL},

@@ -6,6 +6,9 @@
  * Columns are numbered from 1 on the command line (as in cut and awk) and
  * stored 0-based here. The axis map is a signed permutation applied to both
  * sensors after the unit conversion: out[i] = sign[i] * in[perm[i]].
+ * The accelerometer is then rotated by accel_rot (the identity unless
+ * --accel-misalign gives the small rotation of its triad against the
+ * gyroscope's).
  */
 #ifndef SE23_IMPORT_ROW_H
 #define SE23_IMPORT_ROW_H
@@ -25,6 +28,7 @@ typedef struct {
     double accel_scale;    /**< input unit -> m/s^2 */
     int perm[3];           /**< output axis i is input axis perm[i] ... */
     double sign[3];        /**< ... times sign[i] (+1 or -1) */
+    double accel_rot[3][3]; /**< accel = accel_rot * (mapped accel) */
     double gyro_range;     /**< |raw| >= this is clipped, input units; 0: off */
     double accel_range;    /**< |raw| >= this is clipped, input units; 0: off */
 } row_map_t;
@@ -78,5 +82,16 @@ int row_parse_cols(const char *s, int col[3]);
  * with an optional + or -) into perm, sign; 0 on success.
  */
 int row_parse_axes(const char *s, int perm[3], double sign[3]);
+
+/** Largest angle --accel-misalign accepts [deg]: a triad misalignment,
+ *  not an axis change (that is --axes). */
+#define ROW_MISALIGN_MAX_DEG 10.0
+
+/**
+ * Parses a rotation vector "rx,ry,rz" in degrees (each finite, the angle
+ * at most ROW_MISALIGN_MAX_DEG) into the rotation R = exp(r^)
+ * (Rodrigues); 0 on success, R untouched otherwise.
+ */
+int row_parse_misalign(const char *s, double R[3][3]);
 
 #endif /* SE23_IMPORT_ROW_H */
