@@ -92,9 +92,10 @@
  * any fix within the horizon has a snapshot before it. Fusing a fix stamped
  * d seconds late costs the replay of up to d + delay_horizon seconds of
  * samples (prediction and the zero-velocity updates), in that call.
- * Memory: sizeof(se23_ins_t) = 15,840 B + SE23_INS_RING x 72 B in double,
- * 8,128 B + SE23_INS_RING x 48 B in float (25,056 / 14,272 B with the
- * default ring; README "The navigation filter"); the ring must hold
+ * Memory: sizeof(se23_ins_t) = 15,872 B + SE23_INS_RING x 72 B in double,
+ * 8,144 B + SE23_INS_RING x 48 B in float (25,088 / 14,288 B with the
+ * default ring; README "The navigation filter"; test_ins.c asserts it);
+ * the ring must hold
  * 2 * delay_horizon / dt_nominal + 2 samples (checked by se23_ins_setup).
  * A fix replayed this way equals the same fix applied at
  * its own time (same operations, same order).
@@ -318,7 +319,8 @@ typedef struct {
 } se23_ins_factor_t;
 
 /** The filter (caller-owned; fields are read-only for the caller). Fields
- *  ordered by alignment (no padding in either precision). */
+ *  ordered by alignment (4 bytes of padding in double, before cfg: the
+ *  4-byte fields are an odd number of words). */
 typedef struct {
     /* from cfg */
     int64_t half_ns, max_gap_ns, horizon_ns; /**< half a sample, max_gap, delay_horizon */
@@ -342,7 +344,10 @@ typedef struct {
     int streak, back_streak;
     int have_pending;
     int gated_run;                /**< consecutive gated fixes */
-    se23_real_t nis_last;
+    se23_real_t nis_last;         /**< NIS of the last fused fix */
+    se23_real_t zupt_nis_sum;     /**< sum of the NIS (3 dof) of the live ZUPTs: over
+                                   *   c.zupt_used, about 3 if zupt_sigma_v is the
+                                   *   innovations' size */
     int ring_head, ring_count;    /**< oldest entry, number of entries */
     int replaying;                /**< nonzero inside a replay (counters not repeated) */
     int n_snap;                   /**< snapshots held */

@@ -47,6 +47,20 @@ static void m_zupt_sigma(se23_ins_config_t *c) { c->zupt_sigma_v = SE23_R(0); }
 static void m_detector(se23_ins_config_t *c) { c->detector.window = 1; }
 static void m_inf_lever(se23_ins_config_t *c) { c->lever_b.v[1] = (se23_real_t)INFINITY; }
 
+/* The filter's RAM as ins.h and the README state it (a firmware's budget):
+ * a fixed part plus the ring of SE23_INS_RING samples. */
+static void test_ins_memory_is_as_documented(void **state)
+{
+    (void)state;
+#if SE23_CFG_DOUBLE
+    assert_int_equal(sizeof(se23_ins_hist_t), 72);
+    assert_int_equal(sizeof(se23_ins_t), 15872 + SE23_INS_RING * 72);
+#else
+    assert_int_equal(sizeof(se23_ins_hist_t), 48);
+    assert_int_equal(sizeof(se23_ins_t), 8144 + SE23_INS_RING * 48);
+#endif
+}
+
 static void test_setup_rejects_each_bad_field_and_writes_nothing(void **state)
 {
     (void)state;
@@ -268,6 +282,7 @@ static void test_fixes_near_the_end_of_time(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_ins_memory_is_as_documented),
         cmocka_unit_test(test_setup_rejects_each_bad_field_and_writes_nothing),
         cmocka_unit_test(test_init_checks_the_state_once_and_counts_rejections),
         cmocka_unit_test(test_every_sample_ends_in_one_counter),

@@ -494,6 +494,8 @@ static void summary(const node_t *nd, int64_t skipped, double cpu_s)
                c->gnss_pending_dropped);
     printf("  %-20s %lld\n", "decode_errors", (long long)nd->decode_errors);
     printf("  %-20s %lld\n", "log_skipped_bytes", (long long)skipped);
+    printf("  %-20s %.3f\n", "zupt_nis_mean",
+           c->zupt_used > 0U ? (double)nd->ins.zupt_nis_sum / (double)c->zupt_used : 0.0);
     printf("  %-20s 0x%03x\n", "status", (unsigned)nd->ins.status);
     printf("  %-20s %.3f\n", "cpu_seconds", cpu_s);
     printf("  %-20s %.0f\n", "samples_per_s", cpu_s > 0.0 ? (double)c->imu_used / cpu_s : 0.0);

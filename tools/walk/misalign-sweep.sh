@@ -6,7 +6,9 @@
 #   sh tools/walk/misalign-sweep.sh HARNESS_BUILD_DIR [RX,RY,RZ ...]
 #
 # Each rotation vector in degrees (default: +-0.5 and +-1 about each axis);
-# prints one line of 3D / horizontal / vertical closure per vector.
+# prints one line per vector: the 3D / horizontal / vertical closure and
+# the mean NIS of the live ZUPTs (se23-ins's zupt_nis_mean), the walk's
+# own verdict on the rotation.
 set -eu
 H=${1:-build/harness}
 [ $# -gt 0 ] && shift
@@ -16,11 +18,12 @@ CSV=tools/data/xio-gait-tracking/short_walk.csv
 VECTORS=${*:-"0,0,0 -1,0,0 -0.5,0,0 0.5,0,0 1,0,0 0,-1,0 0,-0.5,0 0,0.5,0 0,1,0 0,0,-1 0,0,-0.5 0,0,0.5 0,0,1"}
 mkdir -p "$RUN"
 echo "== se23 walk: closure against an accelerometer misalignment (double, preset foot)"
-printf '%-16s %8s %8s %8s\n' "misalign [deg]" "3D [m]" "horiz" "vert"
+printf '%-16s %8s %8s %8s %9s\n' "misalign [deg]" "3D [m]" "horiz" "vert" "ZUPT NIS"
 for r in $VECTORS; do
     "$BIN/se23-import" --accel-misalign "$r" --out "file://$RUN/imu.log?mode=w" "$CSV" >/dev/null
     "$BIN/se23-ins" --preset foot --imu-rate 400 --lat 51.45 --nav-rate 400 \
-        --in "file://$RUN/imu.log?speed=0" --out "file://$RUN/ins.log?mode=w" >/dev/null
+        --in "file://$RUN/imu.log?speed=0" --out "file://$RUN/ins.log?mode=w" >"$RUN/summary.txt"
+    nis=$(awk '$1 == "zupt_nis_mean" { print $2 }' "$RUN/summary.txt")
     "$BIN/se23-walk" "$RUN/ins.log" | sed -n 's/^  closure error *\([0-9.]*\) m 3D, \([0-9.]*\) m horizontal, \([0-9.]*\) m vertical$/\1 \2 \3/p' |
-        while read -r c3 ch cv; do printf '%-16s %8s %8s %8s\n' "$r" "$c3" "$ch" "$cv"; done
+        while read -r c3 ch cv; do printf '%-16s %8s %8s %8s %9s\n' "$r" "$c3" "$ch" "$cv" "$nis"; done
 done
