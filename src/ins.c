@@ -129,6 +129,7 @@ se23_status_t se23_ins_setup(const se23_ins_config_t *cfg, se23_ins_t *ins)
         ins->zaru_after_ns = to_ns(cfg->zaru_after);
         ins->max_missing = (int64_t)per_gap + 1;
         ins->nis_last = SE23_R(0);
+        ins->zupt_nis_last = SE23_R(0);
         ins->zupt_nis_sum = SE23_R(0);
         ins->replaying = 0;
         ins->fac_ready = 0;

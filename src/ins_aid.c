@@ -51,7 +51,6 @@ int se23_ins_zupt(se23_ins_t *ins, const se23_imu_sample_t *s, int rest)
     const se23_real_t sw = ins->cfg.zaru_sigma_w;
     int zaru = 0;
     se23_mat3_t C;
-    se23_real_t nis = SE23_R(0);
     se23_status_t st = user_state(ins);
     if ((rest == SE23_INS_REST_ZARU) && (ins->cfg.bias_states != 0) && (sw > SE23_R(0))) {
         zaru = 1;
@@ -61,7 +60,7 @@ int se23_ins_zupt(se23_ins_t *ins, const se23_imu_sample_t *s, int rest)
         st = se23_meas_vel_nav(&ins->work.T, &zero, &C, &ins->meas);
     }
     if (st == SE23_OK) {
-        st = update_work(ins, &nis);
+        st = update_work(ins, &ins->zupt_nis_last);
     }
     if ((st == SE23_OK) && (zaru != 0)) {
         /* at rest the gyro senses the Earth rate, R^T Omega (zero on flat
@@ -86,7 +85,7 @@ int se23_ins_zupt(se23_ins_t *ins, const se23_imu_sample_t *s, int rest)
         return 0;
     }
     se23_ins_count(&ins->c.zupt_used);
-    ins->zupt_nis_sum += nis;
+    ins->zupt_nis_sum += ins->zupt_nis_last;
     if (zaru != 0) {
         se23_ins_count(&ins->c.zaru_used);
     }

@@ -92,8 +92,8 @@
  * any fix within the horizon has a snapshot before it. Fusing a fix stamped
  * d seconds late costs the replay of up to d + delay_horizon seconds of
  * samples (prediction and the zero-velocity updates), in that call.
- * Memory: sizeof(se23_ins_t) = 15,872 B + SE23_INS_RING x 72 B in double,
- * 8,144 B + SE23_INS_RING x 48 B in float (25,088 / 14,288 B with the
+ * Memory: sizeof(se23_ins_t) = 15,880 B + SE23_INS_RING x 72 B in double,
+ * 8,152 B + SE23_INS_RING x 48 B in float (25,096 / 14,296 B with the
  * default ring; README "The navigation filter"; test_ins.c asserts it);
  * the ring must hold
  * 2 * delay_horizon / dt_nominal + 2 samples (checked by se23_ins_setup).
@@ -319,9 +319,14 @@ typedef struct {
 } se23_ins_factor_t;
 
 /** The filter (caller-owned; fields are read-only for the caller). Fields
- *  ordered by alignment (4 bytes of padding in double, before cfg: the
+ *  ordered by alignment (4 bytes of padding in each precision: the
  *  4-byte fields are an odd number of words). */
 typedef struct {
+    /* ZUPT consistency (two reals: 8 bytes in float, keeping int64 alignment) */
+    se23_real_t zupt_nis_last;    /**< NIS (3 dof) of the last ZUPT */
+    se23_real_t zupt_nis_sum;     /**< sum of it over the live ZUPTs: over
+                                   *   c.zupt_used, about 3 if zupt_sigma_v is the
+                                   *   innovations' size */
     /* from cfg */
     int64_t half_ns, max_gap_ns, horizon_ns; /**< half a sample, max_gap, delay_horizon */
     int64_t zaru_after_ns;        /**< zaru_after */
@@ -345,9 +350,6 @@ typedef struct {
     int have_pending;
     int gated_run;                /**< consecutive gated fixes */
     se23_real_t nis_last;         /**< NIS of the last fused fix */
-    se23_real_t zupt_nis_sum;     /**< sum of the NIS (3 dof) of the live ZUPTs: over
-                                   *   c.zupt_used, about 3 if zupt_sigma_v is the
-                                   *   innovations' size */
     int ring_head, ring_count;    /**< oldest entry, number of entries */
     int replaying;                /**< nonzero inside a replay (counters not repeated) */
     int n_snap;                   /**< snapshots held */
