@@ -54,7 +54,8 @@ TGT_WALK_CSV := tools/data/xio-gait-tracking/short_walk.csv
 TGT_WALK_OBJS = $(patsubst %,$(TGT)/$(1)/%.o,walk_replay walk_replay_drive ins_replay_drive)
 TGT_WALK_GEN_SRCS := tools/target/gen_walk_replay.c tools/target/gen_print.c \
                      tests/target/ins_replay_drive.c tests/target/walk_replay_drive.c \
-                     tools/import/csv.c tools/import/row.c tools/import/hygiene.c
+                     tools/import/csv.c tools/import/row.c tools/import/hygiene.c \
+                     tools/lcm/ldmath.c
 # $(call tgt_walk_gen,float|double,SE23_CFG_DOUBLE)
 define tgt_walk_gen
 $(TGT)/gen_walk_replay_$(1): $(TGT_WALK_GEN_SRCS) tools/target/gen_print.h \

@@ -323,7 +323,7 @@ typedef struct {
  *  4-byte fields are an odd number of words). */
 typedef struct {
     /* ZUPT consistency (two reals: 8 bytes in float, keeping int64 alignment) */
-    se23_real_t zupt_nis_last;    /**< NIS (3 dof) of the last ZUPT */
+    se23_real_t zupt_nis_last;    /**< NIS (3 dof) of the last ZUPT update computed */
     se23_real_t zupt_nis_sum;     /**< sum of it over the live ZUPTs: over
                                    *   c.zupt_used, about 3 if zupt_sigma_v is the
                                    *   innovations' size */

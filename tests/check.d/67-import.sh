@@ -270,9 +270,7 @@ check import-units-axes-roundtrip i_units_axes
 # 10 degrees about z (the largest accepted) and 0.6,-0.8,0 (1 degree about
 # a tilted axis, Rodrigues' formula written out here), to 1e-12.
 i_misalign() {
-    printf '0,0.1,0.2,0.3,1.5,-2.5,9.75
-0.01,0.1,0.2,0.3,1.5,-2.5,9.75
-' >"$IW/mis.csv"
+    printf '0,0.1,0.2,0.3,1.5,-2.5,9.75\n0.01,0.1,0.2,0.3,1.5,-2.5,9.75\n' >"$IW/mis.csv"
     i_run mis 0 --header 0 --gyro-unit rad/s --accel-unit m/s2 --axes y,-x,-z \
         --accel-misalign 0,0,10 && i_back mis samples=2 &&
         grep -qx "first_omega 0.20000000000000001 -0.10000000000000001 -0.29999999999999999" \

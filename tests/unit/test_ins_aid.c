@@ -83,9 +83,6 @@ static void test_zupt_holds_rest_and_estimates_biases(void **state)
     assert_true(fabs((double)out.T.v.v[2]) > 0.05); /* ~ b_a t = 0.08 m/s */
 }
 
-/* A level body at rest at the origin with the antenna at lever l: fixes at
- * l (R = I). With the lever configured the body goes to the origin; with
- * it not, it goes to the antenna. */
 /* zupt_nis_sum is the NIS of the live ZUPTs: a body at rest started with a
  * velocity error v0 (1-sigma 0.1 m/s) gives at its first ZUPT
  * sum_i v0_i^2 / (P_v + sigma_z^2), P_v grown by the 0.1 s of prediction
@@ -117,6 +114,9 @@ static void test_zupt_nis_sums_the_innovations(void **state)
     assert_true(fabs((double)ins.zupt_nis_sum - want) < 0.05 * want);
 }
 
+/* A level body at rest at the origin with the antenna at lever l: fixes at
+ * l (R = I). With the lever configured the body goes to the origin; with
+ * it not, it goes to the antenna. */
 static void test_lever_arm_places_the_body(void **state)
 {
     (void)state;

@@ -5,6 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "../lcm/ldmath.h"
+
 static void set_why(row_why_t *why, int nfields, int col, const csv_field_t *fld)
 {
     if (why != NULL) {
@@ -97,8 +99,8 @@ row_status_t row_parse(const row_map_t *m, const char *line, int ncols, row_t *o
     convert(m, out->raw_gyro, m->gyro_scale, out->omega);
     convert(m, out->raw_accel, m->accel_scale, a);
     for (k = 0; k < 3; k++) {
-        out->accel[k] = m->accel_rot[k][0] * a[0] + m->accel_rot[k][1] * a[1] +
-                        m->accel_rot[k][2] * a[2];
+        out->accel[k] = m->accel_rot[3 * k] * a[0] + m->accel_rot[3 * k + 1] * a[1] +
+                        m->accel_rot[3 * k + 2] * a[2];
     }
     out->gyro_clipped = clipped(out->raw_gyro, m->gyro_range);
     out->accel_clipped = clipped(out->raw_accel, m->accel_range);
@@ -198,12 +200,14 @@ int row_parse_axes(const char *s, int perm[3], double sign[3])
     return 0;
 }
 
-int row_parse_misalign(const char *s, double R[3][3])
+int row_parse_misalign(const char *s, double R[9])
 {
     const double deg = 3.14159265358979323846 / 180.0;
     char item[32];
-    double r[3], th2 = 0.0, th, a, b;
-    int k, i, j;
+    double r[3];
+    ld_vec3_t phi;
+    ld_mat3_t E;
+    int k;
     for (k = 0; k < 3; k++) {
         char *end = NULL;
         if (s == NULL || next_item(&s, item, sizeof item) != 0) {
@@ -213,29 +217,15 @@ int row_parse_misalign(const char *s, double R[3][3])
         if (end == item || *end != '\0' || !isfinite(r[k])) {
             return -1;
         }
-        th2 += r[k] * r[k];
     }
-    if (s != NULL || !(sqrt(th2) <= ROW_MISALIGN_MAX_DEG)) {
+    if (s != NULL || !(sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]) <= ROW_MISALIGN_MAX_DEG)) {
         return -1;
     }
-    /* exp(r^) = I + a r^ + b r^2, a = sin(th)/th, b = (1 - cos th)/th^2;
-     * r^2 = r r^T - th^2 I. */
-    th = sqrt(th2) * deg;
-    a = th > 0.0 ? sin(th) / th : 1.0;
-    b = th > 0.0 ? (1.0 - cos(th)) / (th * th) : 0.5;
     for (k = 0; k < 3; k++) {
         r[k] *= deg;
     }
-    for (i = 0; i < 3; i++) {
-        for (j = 0; j < 3; j++) {
-            R[i][j] = (i == j ? 1.0 - b * th * th : 0.0) + b * r[i] * r[j];
-        }
-    }
-    R[0][1] -= a * r[2];
-    R[1][0] += a * r[2];
-    R[0][2] += a * r[1];
-    R[2][0] -= a * r[1];
-    R[1][2] -= a * r[0];
-    R[2][1] += a * r[0];
+    phi = ld_vec3_from(r);
+    E = ld_exp(&phi);
+    ld_mat3_to(&E, R);
     return 0;
 }

@@ -28,7 +28,7 @@ typedef struct {
     double accel_scale;    /**< input unit -> m/s^2 */
     int perm[3];           /**< output axis i is input axis perm[i] ... */
     double sign[3];        /**< ... times sign[i] (+1 or -1) */
-    double accel_rot[3][3]; /**< accel = accel_rot * (mapped accel) */
+    double accel_rot[9];   /**< accel = accel_rot * (mapped accel), row-major */
     double gyro_range;     /**< |raw| >= this is clipped, input units; 0: off */
     double accel_range;    /**< |raw| >= this is clipped, input units; 0: off */
 } row_map_t;
@@ -89,9 +89,10 @@ int row_parse_axes(const char *s, int perm[3], double sign[3]);
 
 /**
  * Parses a rotation vector "rx,ry,rz" in degrees (each finite, the angle
- * at most ROW_MISALIGN_MAX_DEG) into the rotation R = exp(r^)
- * (Rodrigues); 0 on success, R untouched otherwise.
+ * at most ROW_MISALIGN_MAX_DEG) into the rotation R = exp(r^), row-major
+ * (the harness's ld_exp, tools/lcm/ldmath.h); 0 on success, R untouched
+ * otherwise.
  */
-int row_parse_misalign(const char *s, double R[3][3]);
+int row_parse_misalign(const char *s, double R[9]);
 
 #endif /* SE23_IMPORT_ROW_H */

@@ -109,7 +109,7 @@ static void import_map(row_map_t *m)
         m->accel_col[k] = 4 + k;
         m->perm[k] = k;
         m->sign[k] = 1.0;
-        m->accel_rot[k][k] = 1.0; /* no --accel-misalign */
+        m->accel_rot[4 * k] = 1.0; /* no --accel-misalign */
     }
     m->time_exp = 9;
     m->gyro_scale = DEG;
