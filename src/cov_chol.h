@@ -37,7 +37,10 @@ static inline int se23_chol_pivot_ok(se23_real_t d, se23_real_t a)
  * 3 multiplies, 3 square roots and divisions. */
 static inline int se23_chol3(se23_real_t *L)
 {
-    const se23_real_t d0 = L[0];
+    /* The caller has written the triangle; when it is the Kalman update's
+     * work area, uninitialised on se23_kalman_cov's stack and filled by
+     * innovation_cov's blocks, the analyzer loses track (kalman_parts.c). */
+    const se23_real_t d0 = L[0]; // NOLINT(clang-analyzer-core.uninitialized.Assign)
     if (!se23_chol_pivot_ok(d0, L[0])) {
         return 0;
     }
@@ -67,7 +70,7 @@ static inline int se23_chol_loop(se23_real_t *L, int n)
 {
     se23_real_t *lj = L; /* row j; row j + 1 starts j + 1 entries later */
     for (int j = 0; j < n; ++j) {
-        se23_real_t d = lj[j];
+        se23_real_t d = lj[j]; // NOLINT(clang-analyzer-core.uninitialized.Assign): as in se23_chol3
         for (int k = 0; k < j; ++k) {
             d = se23_fma(-lj[k], lj[k], d);
         }

@@ -27,6 +27,7 @@
 #include "imu_step.h"
 #include "se23/gauss.h"
 #include "se23/types.h"
+#include "se23/work.h"
 
 /** The O(n) overflow bounds of a step (se23_cov_step_fits, the factor's
  *  bound on J+ and the Deltas) keep every result and partial sum below
@@ -36,21 +37,6 @@
 #else
 #define SE23_COV_STEP_MAX (SE23_R(FLT_MAX) / SE23_R(64))
 #endif
-
-/** Bt, the 9x6 input matrix before the rotation D: blk[i][k] is block row i
- *  (phi, nu, rho) and block column k (0: gyro, 1: accel). blk[0][1] is
- *  zero and never read: the rotation of an increment does not depend on
- *  the accelerometer. */
-typedef struct {
-    se23_mat3_t blk[3][2];
-} se23_input_blocks_t;
-
-/** Noise of one sample: white-noise variances of the sample averages,
- *  qg = sg^2/dt, qa = sa^2/dt, and bias random walk, wg = qg_w^2 dt,
- *  wa = qa_w^2 dt (gauss.h, "Noise discretisation"). */
-typedef struct {
-    se23_real_t qg, qa, wg, wa;
-} se23_step_noise_t;
 
 /**
  * q = the per-sample noise of the model nz over dt (0 < dt, checked by the
@@ -180,17 +166,16 @@ void se23_input_blocks(se23_input_jac_kind_t kind,
 
 /**
  * The mean and input half of one filter prediction (se23_gauss_predict):
- * se23_imu_step_ups from the trusted pose T and the corrected sample c,
- * the step noise q of c.dt, and Bt of the given kind, checked finite
- * (SE23_ERR_NONFINITE otherwise). A call of its own so that the
- * increment's parts, used only to build Bt, are not on the stack under the
- * covariance kernels. Its outputs are scratch on error.
+ * se23_imu_step_ups from the trusted pose T and the corrected sample
+ * w->in.c into w->T_next and w->in.U, the step noise w->in.q of c.dt, and
+ * w->in.Bt of the given kind, checked finite (SE23_ERR_NONFINITE
+ * otherwise). A call of its own so that the increment's parts, used only
+ * to build Bt, are not on the stack under the covariance kernels. Its
+ * outputs are scratch on error.
  */
 se23_status_t se23_predict_inputs(const se23_earth_model_t *model, const se23_pose_t *T,
-                                  const se23_imu_sample_t *c, const se23_imu_noise_t *noise,
-                                  se23_input_jac_kind_t kind, se23_pose_t *T_next,
-                                  se23_pose_t *U, se23_step_noise_t *q,
-                                  se23_input_blocks_t *Bt);
+                                  const se23_imu_noise_t *noise, se23_input_jac_kind_t kind,
+                                  se23_predict_work_t *w);
 
 /** B = D Bt, the public form of the input matrix (gauss.h). */
 void se23_input_blocks_rotate(const se23_mat3_t *R,

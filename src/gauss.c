@@ -252,17 +252,18 @@ se23_status_t se23_gauss_propagate(const se23_gauss_t *g, const se23_pose_t *U,
     return SE23_OK;
 }
 
-se23_status_t se23_gauss_predict(const se23_earth_model_t *model,
-                                 const se23_gauss_t *g,
-                                 const se23_imu_sample_t *s,
-                                 const se23_imu_noise_t *noise,
-                                 se23_input_jac_kind_t kind,
-                                 se23_gauss_t *out)
+se23_status_t se23_gauss_predict_work(const se23_earth_model_t *model,
+                                      const se23_gauss_t *g,
+                                      const se23_imu_sample_t *s,
+                                      const se23_imu_noise_t *noise,
+                                      se23_input_jac_kind_t kind,
+                                      se23_predict_work_t *w, se23_gauss_t *out)
 {
     SE23_CHECK_NOT_NULL(model);
     SE23_CHECK_NOT_NULL(g);
     SE23_CHECK_NOT_NULL(s);
     SE23_CHECK_NOT_NULL(noise);
+    SE23_CHECK_NOT_NULL(w);
     SE23_CHECK_NOT_NULL(out);
     se23_status_t st = state_check(g);
     if (st == SE23_OK && kind != SE23_INPUT_JAC_EXACT && kind != SE23_INPUT_JAC_BASIC) {
@@ -271,27 +272,35 @@ se23_status_t se23_gauss_predict(const se23_earth_model_t *model,
     if (st != SE23_OK) {
         return st;
     }
-    se23_imu_sample_t c;
-    se23_imu_sample_corrected(s, &g->b_g, &g->b_a, &c);
-    /* The step checks the sample; its outputs are locals until the end. */
-    se23_pose_t U, T_next;
-    se23_step_noise_t q;
-    se23_input_blocks_t Bt;
-    st = se23_predict_inputs(model, &g->T, &c, noise, kind, &T_next, &U, &q, &Bt);
+    const se23_step_inputs_t *in = &w->in;
+    se23_imu_sample_corrected(s, &g->b_g, &g->b_a, &w->in.c);
+    /* The step checks the sample; its outputs stay in w until the end. */
+    st = se23_predict_inputs(model, &g->T, noise, kind, w);
     if (st != SE23_OK) {
         return st;
     }
-    if (!se23_cov_step_fits(&U, c.dt, se23_input_blocks_bound(&c.f_b, c.dt), &q, g->n,
-                            g->P.m, S)) {
+    if (!se23_cov_step_fits(&in->U, in->c.dt, se23_input_blocks_bound(&in->c.f_b, in->c.dt),
+                            &in->q, g->n, g->P.m, S)) {
         return SE23_ERR_NONFINITE; /* P+ would overflow */
     }
     /* Nothing fails from here on (the covariance step reads only g->P). */
-    se23_cov_step(&U, c.dt, &Bt, &q, g->n, g->P.m, out->P.m, S);
-    out->T = T_next;
+    se23_cov_step(&in->U, in->c.dt, &in->Bt, &in->q, g->n, g->P.m, out->P.m, S);
+    out->T = w->T_next;
     out->b_g = g->b_g;
     out->b_a = g->b_a;
     out->n = g->n;
     return SE23_OK;
+}
+
+se23_status_t se23_gauss_predict(const se23_earth_model_t *model,
+                                 const se23_gauss_t *g,
+                                 const se23_imu_sample_t *s,
+                                 const se23_imu_noise_t *noise,
+                                 se23_input_jac_kind_t kind,
+                                 se23_gauss_t *out)
+{
+    se23_predict_work_t w;
+    return se23_gauss_predict_work(model, g, s, noise, kind, &w, out);
 }
 
 static se23_status_t convert(const se23_earth_model_t *model,

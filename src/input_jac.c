@@ -262,19 +262,18 @@ se23_status_t se23_gauss_input_jac(se23_input_jac_kind_t kind,
 }
 
 se23_status_t se23_predict_inputs(const se23_earth_model_t *model, const se23_pose_t *T,
-                                  const se23_imu_sample_t *c, const se23_imu_noise_t *noise,
-                                  se23_input_jac_kind_t kind, se23_pose_t *T_next,
-                                  se23_pose_t *U, se23_step_noise_t *q,
-                                  se23_input_blocks_t *Bt)
+                                  const se23_imu_noise_t *noise, se23_input_jac_kind_t kind,
+                                  se23_predict_work_t *w)
 {
+    se23_step_inputs_t *in = &w->in;
     se23_increment_parts_t parts;
-    se23_status_t st = se23_imu_step_ups(model, T, c, T_next, U, &parts);
+    se23_status_t st = se23_imu_step_ups(model, T, &in->c, &w->T_next, &in->U, &parts);
     if (st == SE23_OK) {
-        st = se23_step_noise(noise, c->dt, q);
+        st = se23_step_noise(noise, in->c.dt, &in->q);
     }
     if (st != SE23_OK) {
         return st;
     }
-    se23_input_blocks(kind, &parts, &U->R, &c->f_b, c->dt, Bt);
-    return se23_input_blocks_finite(Bt, parts.tame) ? SE23_OK : SE23_ERR_NONFINITE;
+    se23_input_blocks(kind, &parts, &in->U.R, &in->c.f_b, in->c.dt, &in->Bt);
+    return se23_input_blocks_finite(&in->Bt, parts.tame) ? SE23_OK : SE23_ERR_NONFINITE;
 }

@@ -41,7 +41,8 @@ static void diag_cov(se23_real_t s0, se23_real_t s1, se23_real_t s2, se23_mat3_t
 /* ins->work updated in place with ins->meas; *nis its NIS (if not NULL). */
 static se23_status_t update_work(se23_ins_t *ins, se23_real_t *nis)
 {
-    return se23_kalman_update(&ins->work, &ins->meas, &ins->work, nis);
+    return se23_kalman_update_work(&ins->work, &ins->meas, &ins->kernel.kalman, &ins->work,
+                                   nis);
 }
 
 int se23_ins_zupt(se23_ins_t *ins, const se23_imu_sample_t *s, int rest)

@@ -67,8 +67,8 @@ int se23_ins_predict_interval(se23_ins_t *ins, const se23_imu_sample_t *s)
 int se23_ins_predict(se23_ins_t *ins, const se23_imu_sample_t *s)
 {
     /* In place (gauss.h: outputs may alias inputs; nothing written on error). */
-    if (se23_gauss_predict(&ins->model, &ins->g, s, &ins->cfg.noise, SE23_INPUT_JAC_EXACT,
-                           &ins->g) != SE23_OK) {
+    if (se23_gauss_predict_work(&ins->model, &ins->g, s, &ins->cfg.noise,
+                                SE23_INPUT_JAC_EXACT, &ins->kernel.predict, &ins->g) != SE23_OK) {
         if (ins->replaying == 0) {
             se23_ins_count(&ins->c.filter_errors);
         }

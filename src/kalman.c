@@ -82,38 +82,72 @@ static int mean_in_range(const se23_gauss_t *g)
     return 1;
 }
 
+/* What both updates check before the covariance half: n, the caller's
+ * measurement (mask from scan_h), the mean's range. */
+static se23_status_t update_check(const se23_gauss_t *g, const se23_meas_t *y,
+                                  unsigned *mask)
+{
+    if (g->n != SE23_GAUSS_N_POSE && g->n != SE23_GAUSS_N_BIAS) {
+        return SE23_ERR_DIM;
+    }
+#if SE23_CFG_DEEP_CHECKS
+    se23_status_t st = se23_gauss_check(g);
+    if (st == SE23_OK) {
+        st = check_meas(y, g->n, mask);
+    }
+#else
+    se23_status_t st = check_meas(y, g->n, mask);
+#endif
+    if (st == SE23_OK && !mean_in_range(g)) {
+        st = SE23_ERR_NONFINITE;
+    }
+    return st;
+}
+
+/* The mean half, after a covariance half that succeeded (cannot fail). */
+static void update_finish(const se23_gauss_t *g, const se23_real_t *dx, se23_real_t q,
+                          se23_gauss_t *out, se23_real_t *nis)
+{
+    se23_kalman_retract(g, dx, out);
+    if (nis != NULL) {
+        *nis = q;
+    }
+}
+
 se23_status_t se23_kalman_update(const se23_gauss_t *g, const se23_meas_t *y,
                                  se23_gauss_t *out, se23_real_t *nis)
 {
     SE23_CHECK_NOT_NULL(g);
     SE23_CHECK_NOT_NULL(y);
     SE23_CHECK_NOT_NULL(out);
-    if (g->n != SE23_GAUSS_N_POSE && g->n != SE23_GAUSS_N_BIAS) {
-        return SE23_ERR_DIM;
-    }
     unsigned mask = 0u;
-#if SE23_CFG_DEEP_CHECKS
-    se23_status_t st = se23_gauss_check(g);
-    if (st == SE23_OK) {
-        st = check_meas(y, g->n, &mask);
-    }
-#else
-    se23_status_t st = check_meas(y, g->n, &mask);
-#endif
-    if (st != SE23_OK) {
-        return st;
-    }
-    if (!mean_in_range(g)) {
-        return SE23_ERR_NONFINITE;
-    }
     se23_real_t dx[S], q;
-    st = se23_kalman_cov(g, y, mask, dx, &q, out->P.m);
-    if (st != SE23_OK) {
-        return st;
+    se23_status_t st = update_check(g, y, &mask);
+    if (st == SE23_OK) {
+        st = se23_kalman_cov(g, y, mask, dx, &q, out->P.m);
     }
-    se23_kalman_retract(g, dx, out);
-    if (nis != NULL) {
-        *nis = q;
+    if (st == SE23_OK) {
+        update_finish(g, dx, q, out, nis);
     }
-    return SE23_OK;
+    return st;
+}
+
+se23_status_t se23_kalman_update_work(const se23_gauss_t *g, const se23_meas_t *y,
+                                      se23_kalman_work_t *w, se23_gauss_t *out,
+                                      se23_real_t *nis)
+{
+    SE23_CHECK_NOT_NULL(g);
+    SE23_CHECK_NOT_NULL(y);
+    SE23_CHECK_NOT_NULL(w);
+    SE23_CHECK_NOT_NULL(out);
+    unsigned mask = 0u;
+    se23_real_t dx[S], q;
+    se23_status_t st = update_check(g, y, &mask);
+    if (st == SE23_OK) {
+        st = se23_kalman_cov_work(g, y, mask, w, dx, &q, out->P.m);
+    }
+    if (st == SE23_OK) {
+        update_finish(g, dx, q, out, nis);
+    }
+    return st;
 }

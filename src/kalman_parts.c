@@ -74,19 +74,29 @@ static int padded(int m)
     return 3 * ((m + 2) / 3);
 }
 
+/* Nonzero if 3-column block b of H is active (bit b of mask). */
+static int active(unsigned mask, int b)
+{
+    return (mask & (1u << (unsigned)b)) != 0u;
+}
+
 /* C = P H^T over the active blocks: n x padded(m), (i, r) at C[M i + r],
  * padding columns 0. Per group of three rows of H and active block, the
  * 3x3 block of H stays in registers while P's 3-column block streams by
  * (9 multiply-adds per row): n m a in all. The first block starts from
  * zero_row (stride 0) instead of C, so C needs no clearing. */
-static void cross_cov(const se23_real_t *P, const se23_meas_t *y, int n,
-                      const int *blk, int nb, se23_real_t *C)
+static void cross_cov(const se23_real_t *P, const se23_meas_t *y, int n, unsigned mask,
+                      se23_real_t *C)
 {
     const int mp = padded(y->m);
     for (int g = 0; g < mp; g += 3) {
         const se23_real_t *h0 = h_row(y, g), *h1 = h_row(y, g + 1), *h2 = h_row(y, g + 2);
-        for (int k = 0; k < nb; ++k) {
-            const int j = 3 * blk[k];
+        int k = 0; /* active blocks done */
+        for (int b = 0; b < n / 3; ++b) {
+            if (!active(mask, b)) {
+                continue;
+            }
+            const int j = 3 * b;
             const se23_real_t a00 = h0[j], a01 = h0[j + 1], a02 = h0[j + 2];
             const se23_real_t a10 = h1[j], a11 = h1[j + 1], a12 = h1[j + 2];
             const se23_real_t a20 = h2[j], a21 = h2[j + 1], a22 = h2[j + 2];
@@ -103,14 +113,34 @@ static void cross_cov(const se23_real_t *P, const se23_meas_t *y, int n,
                 c[1] = r1;
                 c[2] = r2;
             }
+            ++k;
         }
-        if (nb == 0) {
+        if (k == 0) {
             for (int i = 0; i < n; ++i) {
                 for (int r = g; r < g + 3; ++r) {
                     C[M * i + r] = SE23_R(0);
                 }
             }
         }
+    }
+}
+
+/* Entries (q, r0..r0+2) of S = (sums) + R that lie in its packed lower
+ * triangle (column <= q) and in its m rows (R's upper triangle read). */
+static void store_row(const se23_real_t *R, int m, int q, int r0, se23_real_t s0,
+                      se23_real_t s1, se23_real_t s2, se23_real_t *L)
+{
+    if (q >= m) {
+        return;
+    }
+    se23_real_t *l = &L[SE23_COV_TRI(q) + r0];
+    const se23_real_t *r = &R[M * r0 + q];
+    l[0] = s0 + r[0];
+    if (r0 + 1 <= q) {
+        l[1] = s1 + r[M];
+    }
+    if (r0 + 2 <= q) {
+        l[2] = s2 + r[2 * M];
     }
 }
 
@@ -121,15 +151,18 @@ static void cross_cov(const se23_real_t *P, const se23_meas_t *y, int n,
  * (the diagonal block's upper half is computed and dropped). Rows
  * past m are H's zero padding and are not stored; R's upper triangle is
  * read. */
-static void innovation_block(const se23_meas_t *y, const int *blk, int nb,
+static void innovation_block(const se23_meas_t *y, int m, int n, unsigned mask,
                              const se23_real_t *C, int q0, int r0, se23_real_t *L)
 {
     const se23_real_t *hr0 = h_row(y, r0), *hr1 = h_row(y, r0 + 1), *hr2 = h_row(y, r0 + 2);
     se23_real_t s00 = SE23_R(0), s01 = SE23_R(0), s02 = SE23_R(0);
     se23_real_t s10 = SE23_R(0), s11 = SE23_R(0), s12 = SE23_R(0);
     se23_real_t s20 = SE23_R(0), s21 = SE23_R(0), s22 = SE23_R(0);
-    for (int k = 0; k < nb; ++k) {
-        for (int j = 3 * blk[k]; j < 3 * blk[k] + 3; ++j) {
+    for (int b = 0; b < n / 3; ++b) {
+        if (!active(mask, b)) {
+            continue;
+        }
+        for (int j = 3 * b; j < 3 * b + 3; ++j) {
             /* C's rows 0..n-1, columns 0..padded(m)-1 are all written by
              * cross_cov; the analyzer cannot follow the blocks. */
             const se23_real_t *c = &C[M * j + q0];
@@ -146,21 +179,19 @@ static void innovation_block(const se23_meas_t *y, const int *blk, int nb,
             s22 = se23_fma(c2, h2, s22);
         }
     }
-    const se23_real_t sb[3][3] = {{s00, s01, s02}, {s10, s11, s12}, {s20, s21, s22}};
-    for (int a = 0; a < 3; ++a) {
-        const int q = q0 + a;
-        for (int b = 0; (b < 3) && (r0 + b <= q) && (q < y->m); ++b) {
-            L[SE23_COV_TRI(q) + r0 + b] = sb[a][b] + y->R[M * (r0 + b) + q];
-        }
-    }
+    /* The block's entries in its three rows, no array: an array of the
+     * nine sums would sit on the stack under the whole update. */
+    store_row(y->R, m, q0, r0, s00, s01, s02, L);
+    store_row(y->R, m, q0 + 1, r0, s10, s11, s12, L);
+    store_row(y->R, m, q0 + 2, r0, s20, s21, s22, L);
 }
 
-static void innovation_cov(const se23_meas_t *y, const int *blk, int nb,
+static void innovation_cov(const se23_meas_t *y, int m, int n, unsigned mask,
                            const se23_real_t *C, se23_real_t *L)
 {
-    for (int q0 = 0; q0 < y->m; q0 += 3) {
+    for (int q0 = 0; q0 < m; q0 += 3) {
         for (int r0 = 0; r0 <= q0; r0 += 3) {
-            innovation_block(y, blk, nb, C, q0, r0, L);
+            innovation_block(y, m, n, mask, C, q0, r0, L);
         }
     }
 }
@@ -320,21 +351,18 @@ static se23_real_t trace(const se23_real_t *P, int n)
     return (t0 + t1) + t2;
 }
 
-se23_status_t se23_kalman_cov(const se23_gauss_t *g, const se23_meas_t *y,
-                              unsigned mask, se23_real_t *dx, se23_real_t *nis,
-                              se23_real_t *Pout)
+se23_status_t se23_kalman_cov_work(const se23_gauss_t *g, const se23_meas_t *y,
+                                   unsigned mask, se23_kalman_work_t *wk,
+                                   se23_real_t *dx, se23_real_t *nis, se23_real_t *Pout)
 {
     const int n = g->n, m = y->m;
-    se23_real_t U[S * M], L[SE23_MEAS_TRI], w[M];
-    int blk[SE23_GAUSS_NMAX / 3], nb = 0;
-    for (int b = 0; b < n / 3; ++b) {
-        if ((mask & (1u << (unsigned)b)) != 0u) {
-            blk[nb] = b;
-            ++nb;
-        }
-    }
-    cross_cov(g->P.m, y, n, blk, nb, U);
-    innovation_cov(y, blk, nb, U, L);
+    /* Addresses only: every entry is written before it is read (cross_cov,
+     * innovation_cov, the loop on w), which cppcheck's whole-program check
+     * cannot see when se23_kalman_cov passes its uninitialised work area. */
+    // cppcheck-suppress ctuuninitvar
+    se23_real_t *U = wk->U, *L = wk->L, *w = wk->w;
+    cross_cov(g->P.m, y, n, mask, U);
+    innovation_cov(y, m, n, mask, U, L);
     if (!se23_cov_chol_packed(L, m)) {
         return SE23_ERR_NOT_PSD;
     }
@@ -358,6 +386,14 @@ se23_status_t se23_kalman_cov(const se23_gauss_t *g, const se23_meas_t *y,
     downdate(g->P.m, U, n, m, Pout);
     *nis = q;
     return SE23_OK;
+}
+
+se23_status_t se23_kalman_cov(const se23_gauss_t *g, const se23_meas_t *y,
+                              unsigned mask, se23_real_t *dx, se23_real_t *nis,
+                              se23_real_t *Pout)
+{
+    se23_kalman_work_t wk;
+    return se23_kalman_cov_work(g, y, mask, &wk, dx, nis, Pout);
 }
 
 void se23_kalman_retract(const se23_gauss_t *g, const se23_real_t *dx,

@@ -9,9 +9,10 @@
  *
  * A translation unit apart from kalman.c on purpose: se23_kalman_update
  * calls the two halves one after the other, and neither may be inlined
- * into its frame: the covariance's work arrays (one n x m matrix, one
- * packed m x m factor) must never share the stack with the retraction,
- * whose sin/cos may take newlib's large-argument reduction.
+ * into its frame: the covariance's work arrays (se23_kalman_work_t: one
+ * n x m matrix, one packed m x m factor) must never share the stack with
+ * the retraction, whose sin/cos may take newlib's large-argument
+ * reduction. se23_kalman_update_work takes them from its caller.
  *
  * Packed storage: element (i, j), j <= i, of a lower triangle at
  * L[SE23_COV_TRI(i) + j] (cov.h).
@@ -54,7 +55,7 @@ se23_status_t se23_meas_cov_check(const se23_real_t *A, int m, int stride);
 /**
  * The covariance half of se23_kalman_update for a checked g (n = 9 or 15)
  * and y (checked; bit b of mask set for each 3-column block b of H that
- * holds a nonzero, zero blocks are skipped): decides
+ * holds a nonzero, zero blocks are skipped), in the work area wk: decides
  * everything that can fail, then stores P+ = P - U U^T into Pout (may
  * alias g->P.m), the correction dx (n values) and the NIS.
  * @return SE23_OK; SE23_ERR_NOT_PSD if S is not numerically positive
@@ -64,8 +65,13 @@ se23_status_t se23_meas_cov_check(const se23_real_t *A, int m, int stride);
  *         (tr(U U^T) NIS)^(1/2) of every |dx_k| above
  *         SE23_KALMAN_CORR_MAX, or tr P or tr(U U^T) above a quarter of
  *         the largest real (which keeps P+ finite). On error Pout and nis
- *         are not written (dx is scratch).
+ *         are not written (dx and wk are scratch).
  */
+se23_status_t se23_kalman_cov_work(const se23_gauss_t *g, const se23_meas_t *y,
+                                   unsigned mask, se23_kalman_work_t *wk,
+                                   se23_real_t *dx, se23_real_t *nis, se23_real_t *Pout);
+
+/** se23_kalman_cov_work with the work area on this call's stack. */
 se23_status_t se23_kalman_cov(const se23_gauss_t *g, const se23_meas_t *y,
                               unsigned mask, se23_real_t *dx, se23_real_t *nis,
                               se23_real_t *Pout);

@@ -138,14 +138,15 @@ static int rest_fits(const se23_preint_unc_t *fu, const se23_pose_t *U,
     return (jb <= SE23_COV_STEP_MAX) && (cb <= SE23_COV_STEP_MAX) && (db <= SE23_COV_STEP_MAX);
 }
 
-se23_status_t se23_preint_unc_add(se23_preint_unc_t *fu,
-                                  const se23_imu_sample_t *s,
-                                  const se23_imu_noise_t *noise)
+se23_status_t se23_preint_unc_add_work(se23_preint_unc_t *fu,
+                                       const se23_imu_sample_t *s,
+                                       const se23_imu_noise_t *noise,
+                                       se23_preint_work_t *w)
 {
     SE23_CHECK_NOT_NULL(fu);
     SE23_CHECK_NOT_NULL(s);
     SE23_CHECK_NOT_NULL(noise);
-    se23_step_noise_t q;
+    SE23_CHECK_NOT_NULL(w);
 #if SE23_CFG_DEEP_CHECKS
     se23_status_t st = se23_preint_unc_check(fu);
     if (st == SE23_OK) {
@@ -155,41 +156,48 @@ se23_status_t se23_preint_unc_add(se23_preint_unc_t *fu,
     se23_status_t st = se23_imu_sample_check(s, SE23_R(SE23_CFG_DT_MAX));
 #endif
     if (st == SE23_OK) {
-        st = se23_step_noise(noise, s->dt, &q);
+        st = se23_step_noise(noise, s->dt, &w->in.q);
     }
     if (st != SE23_OK) {
         return st;
     }
-    se23_imu_sample_t c;
-    se23_imu_sample_corrected(s, &fu->b_g, &fu->b_a, &c);
-    const int tame = se23_sample_tame(&c); /* finite, and its increment too */
-    if (tame == 0 && (!se23_all_finite(c.w_ib_b.v, 3) || !se23_all_finite(c.f_b.v, 3))) {
+    se23_step_inputs_t *in = &w->in;
+    se23_imu_sample_t *c = &in->c;
+    se23_pose_t *U = &in->U;
+    se23_imu_sample_corrected(s, &fu->b_g, &fu->b_a, c);
+    const int tame = se23_sample_tame(c); /* finite, and its increment too */
+    if (tame == 0 && (!se23_all_finite(c->w_ib_b.v, 3) || !se23_all_finite(c->f_b.v, 3))) {
         return SE23_ERR_NONFINITE; /* finite reading + bias overflowed */
     }
-    se23_pose_t U;
-    se23_increment_parts_t parts;
-    se23_input_blocks_t Bt;
-    se23_imu_increment_parts(&c, &U, &parts);
-    se23_input_blocks(fu->kind, &parts, &U.R, &c.f_b, c.dt, &Bt);
-    const se23_real_t b = se23_input_blocks_bound(&c.f_b, c.dt);
-    if ((tame == 0 && !se23_pose_finite(&U)) || !se23_input_blocks_finite(&Bt, tame) ||
-        !se23_cov_step_fits(&U, c.dt, b, &q, SE23_GAUSS_N_POSE, fu->P.m, 9)) {
+    se23_imu_increment_parts(c, U, &w->parts);
+    se23_input_blocks(fu->kind, &w->parts, &U->R, &c->f_b, c->dt, &in->Bt);
+    const se23_real_t b = se23_input_blocks_bound(&c->f_b, c->dt);
+    if ((tame == 0 && !se23_pose_finite(U)) || !se23_input_blocks_finite(&in->Bt, tame) ||
+        !se23_cov_step_fits(U, c->dt, b, &in->q, SE23_GAUSS_N_POSE, fu->P.m, 9)) {
         return SE23_ERR_NONFINITE; /* the increment, B_k or P+ would overflow */
     }
     /* J+, the classical Jacobians and the Deltas can overflow too (a force
      * near the largest real without noise, P = 0, passes the bound on P+). */
-    if (!rest_fits(fu, &U, &c.f_b, c.dt, b)) {
+    if (!rest_fits(fu, U, &c->f_b, c->dt, b)) {
         return SE23_ERR_NONFINITE;
     }
     /* Nothing below can fail: update in place. */
-    se23_cov_step(&U, c.dt, &Bt, &q, SE23_GAUSS_N_POSE, fu->P.m, fu->P.m, 9);
-    se23_cov_jac_step(&U, c.dt, &Bt, &fu->J);
+    se23_cov_step(U, c->dt, &in->Bt, &in->q, SE23_GAUSS_N_POSE, fu->P.m, fu->P.m, 9);
+    se23_cov_jac_step(U, c->dt, &in->Bt, &fu->J);
     if (fu->classic != 0) {
-        se23_preint_classic_step(&fu->cl, &fu->f.delta.R, &U.R, &c.w_ib_b,
-                                 &c.f_b, c.dt);
+        se23_preint_classic_step(&fu->cl, &fu->f.delta.R, &U->R, &c->w_ib_b,
+                                 &c->f_b, c->dt);
     }
-    se23_preint_add_increment(&fu->f, &U, c.dt);
+    se23_preint_add_increment(&fu->f, U, c->dt);
     return SE23_OK;
+}
+
+se23_status_t se23_preint_unc_add(se23_preint_unc_t *fu,
+                                  const se23_imu_sample_t *s,
+                                  const se23_imu_noise_t *noise)
+{
+    se23_preint_work_t w;
+    return se23_preint_unc_add_work(fu, s, noise, &w);
 }
 
 /* d = J db, the discrepancy of paper eq. bias:discrep to first order. */

@@ -57,6 +57,7 @@
  *   se23_gauss_check            validate a se23_gauss_t
  *   se23_gauss_propagate        covariance step of a se23_gauss_t (n = 9, 15)
  *   se23_gauss_predict          full filter prediction: mean and covariance
+ *   se23_gauss_predict_work     the same, with the caller's work area (work.h)
  *   se23_gauss_from_carried, se23_gauss_to_carried   (R, v', p) <-> (R, v, p)
  *
  * All functions accept outputs that alias inputs.
@@ -67,6 +68,7 @@
 #include "se23/earth.h"
 #include "se23/imu.h"
 #include "se23/types.h"
+#include "se23/work.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -250,6 +252,21 @@ se23_status_t se23_gauss_predict(const se23_earth_model_t *model,
                                  const se23_imu_noise_t *noise,
                                  se23_input_jac_kind_t kind,
                                  se23_gauss_t *out);
+
+/**
+ * se23_gauss_predict with the step's intermediate results in the caller's
+ * work area w (work.h) instead of on the stack: the same statuses and the
+ * same results, bit for bit. w is scratch (unspecified after the call) and
+ * must not overlap another argument.
+ * @return the statuses of se23_gauss_predict; SE23_ERR_NULL also for a
+ *         NULL w. On error out is not written.
+ */
+se23_status_t se23_gauss_predict_work(const se23_earth_model_t *model,
+                                      const se23_gauss_t *g,
+                                      const se23_imu_sample_t *s,
+                                      const se23_imu_noise_t *noise,
+                                      se23_input_jac_kind_t kind,
+                                      se23_predict_work_t *w, se23_gauss_t *out);
 
 /**
  * out = the distribution of the user's state (R, v, p) from that of the

@@ -92,9 +92,11 @@
  * any fix within the horizon has a snapshot before it. Fusing a fix stamped
  * d seconds late costs the replay of up to d + delay_horizon seconds of
  * samples (prediction and the zero-velocity updates), in that call.
- * Memory: sizeof(se23_ins_t) = 15,880 B + SE23_INS_RING x 72 B in double,
- * 8,152 B + SE23_INS_RING x 48 B in float (25,096 / 14,296 B with the
- * default ring; README "The navigation filter"; test_ins.c asserts it);
+ * Memory: sizeof(se23_ins_t) = 17,392 B + SE23_INS_RING x 72 B in double,
+ * 8,904 B + SE23_INS_RING x 48 B in float (26,608 / 15,048 B with the
+ * default ring; README "The navigation filter"; test_ins.c asserts it),
+ * the kernels' work areas included (1,512 / 756 B: they are here and not
+ * on the stack of the calls, "Stack" below);
  * the ring must hold
  * 2 * delay_horizon / dt_nominal + 2 samples (checked by se23_ins_setup).
  * A fix replayed this way equals the same fix applied at
@@ -319,8 +321,8 @@ typedef struct {
 } se23_ins_factor_t;
 
 /** The filter (caller-owned; fields are read-only for the caller). Fields
- *  ordered by alignment (4 bytes of padding in each precision: the
- *  4-byte fields are an odd number of words). */
+ *  ordered by alignment (4 bytes of padding in the double build: the
+ *  4-byte fields are an odd number of words; none in the float build). */
 typedef struct {
     /* ZUPT consistency (two reals: 8 bytes in float, keeping int64 alignment) */
     se23_real_t zupt_nis_last;    /**< NIS (3 dof) of the last ZUPT update computed */
@@ -366,6 +368,13 @@ typedef struct {
     se23_meas_t meas;             /**< scratch of the updates */
     se23_gauss_t g;               /**< state in the model's coordinates */
     se23_gauss_t work;            /**< scratch of the updates (user's coordinates) */
+    /** The kernels' work areas (work.h), here and not on the stack of the
+     *  filter calls ("Stack" above); one kernel call at a time uses them. */
+    union {
+        se23_predict_work_t predict; /**< the prediction */
+        se23_preint_work_t preint;   /**< the preintegrated factor */
+        se23_kalman_work_t kalman;   /**< the updates */
+    } kernel;
 } se23_ins_t;
 
 /**

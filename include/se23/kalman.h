@@ -45,6 +45,7 @@
  *
  * Functions index:
  *   se23_kalman_update       the update above
+ *   se23_kalman_update_work  the same, with the caller's work area
  *   se23_meas_pos_nav        GNSS position (with lever arm)
  *   se23_meas_vel_nav        GNSS velocity; zero velocity (ZUPT) with v_n = 0
  *   se23_meas_vel_nav_lever  GNSS velocity of an antenna at a lever arm
@@ -85,6 +86,14 @@ typedef struct {
     se23_real_t R[SE23_MEAS_MMAX * SE23_MEAS_MMAX];  /**< noise covariance, (i, j) at R[9*i + j] */
 } se23_meas_t;
 
+/** Work area of se23_kalman_update_work (work.h, "Contents"): the factors
+ *  of one update's gain, the largest part of se23_kalman_update's stack. */
+typedef struct {
+    se23_real_t U[SE23_GAUSS_NMAX * SE23_MEAS_MMAX];          /**< C L^-T */
+    se23_real_t L[SE23_MEAS_MMAX * (SE23_MEAS_MMAX + 1) / 2]; /**< S = L L^T, packed */
+    se23_real_t w[SE23_MEAS_MMAX];                            /**< L^-1 z */
+} se23_kalman_work_t;
+
 /**
  * out = g updated with the measurement y (file comment).
  * @param g   the state, trusted (produced by the library or checked once
@@ -110,6 +119,18 @@ typedef struct {
  */
 se23_status_t se23_kalman_update(const se23_gauss_t *g, const se23_meas_t *y,
                                  se23_gauss_t *out, se23_real_t *nis);
+
+/**
+ * se23_kalman_update with the gain's factors in the caller's work area w
+ * instead of on the stack: the same statuses and the same results, bit
+ * for bit. w is scratch (unspecified after the call) and must not overlap
+ * another argument.
+ * @return the statuses of se23_kalman_update; SE23_ERR_NULL also for a
+ *         NULL w. On error nothing is written (out, nis).
+ */
+se23_status_t se23_kalman_update_work(const se23_gauss_t *g, const se23_meas_t *y,
+                                      se23_kalman_work_t *w, se23_gauss_t *out,
+                                      se23_real_t *nis);
 
 /**
  * y = the position of a GNSS antenna at lever arm l_b (body frame) measured

@@ -56,6 +56,7 @@
  *   se23_preint_unc_reset           empty factor at a bias estimate
  *   se23_preint_unc_reset_classic   the same, also accumulating Forster's Jacobians
  *   se23_preint_unc_add             one raw sample: Deltas, P, J (, classical)
+ *   se23_preint_unc_add_work        the same, with the caller's work area (work.h)
  *   se23_preint_unc_check           validate a factor
  *   se23_preint_unc_correct         Delta(bbar) exp(J db), paper eq. biascor
  *   se23_preint_unc_correct_classic Forster et al.'s first-order correction
@@ -70,6 +71,7 @@
 #include "se23/imu.h"
 #include "se23/preint.h"
 #include "se23/types.h"
+#include "se23/work.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -150,6 +152,19 @@ se23_status_t se23_preint_unc_reset_classic(const se23_vec3_t *b_g,
 se23_status_t se23_preint_unc_add(se23_preint_unc_t *fu,
                                   const se23_imu_sample_t *s,
                                   const se23_imu_noise_t *noise);
+
+/**
+ * se23_preint_unc_add with the step's intermediate results in the caller's
+ * work area w (work.h) instead of on the stack: the same statuses and the
+ * same results, bit for bit. w is scratch (unspecified after the call) and
+ * must not overlap another argument.
+ * @return the statuses of se23_preint_unc_add; SE23_ERR_NULL also for a
+ *         NULL w. fu is unchanged on error.
+ */
+se23_status_t se23_preint_unc_add_work(se23_preint_unc_t *fu,
+                                       const se23_imu_sample_t *s,
+                                       const se23_imu_noise_t *noise,
+                                       se23_preint_work_t *w);
 
 /**
  * Checks a factor (the deep check, for callers who want it): kind known,

@@ -21,7 +21,11 @@
  * magnitude of its block, see tools/target/gen_common.hpp).
  * Routines tested on the target without vectors (names up to the first full
  * stop; tools/target/se23_api.py reads them): se23_status_str (by
- * tv_runner), and the navigation filter's se23_ins_setup, se23_ins_init,
+ * tv_runner), the work-area calls se23_gauss_predict_work,
+ * se23_preint_unc_add_work and se23_kalman_update_work (the plain calls'
+ * vectors run them, each plain call being its work-area call with the
+ * work area on its stack; the filter calls them in ins_replay), and the
+ * navigation filter's se23_ins_setup, se23_ins_init,
  * se23_ins_align, se23_ins_imu, se23_ins_gnss, se23_ins_state,
  * se23_ins_take_factor, se23_ins_preset_foot and se23_ins_detector_threshold
  * (by the image ins_replay of tests/target, which runs recorded sequences

@@ -650,6 +650,37 @@ static void test_gauss_predict_matches_step_and_propagate(void **state)
     }
 }
 
+/* The work-area variant is the same computation: equal bits with a work
+ * area full of NaN (0xff bytes) or of zeros, whatever it held before, and
+ * the same status, out untouched, on a bad sample. */
+static void test_gauss_predict_work_equals_predict_bit_for_bit(void **state)
+{
+    (void)state;
+    se23t_rng_t rng;
+    se23t_rng_seed(&rng, 613);
+    se23_earth_model_t model;
+    assert_int_equal(se23_earth_model_init_wgs84(SE23_FRAME_NED, SE23_R(0.8), SE23_R(100),
+                                                 SE23_R(0.01), SE23_R(0.05), &model), SE23_OK);
+    se23_predict_work_t w;
+    for (int rep = 0; rep < 10; ++rep) {
+        const int n = (rep % 2) ? 15 : 9;
+        se23_imu_sample_t s = random_sample(&rng, 0.01);
+        se23_gauss_t g, out, ref;
+        gt_random_gauss(&rng, n, &g);
+        memset(&w, (rep < 5) ? 0xff : 0x00, sizeof w);
+        memset(&out, SENTINEL, sizeof out);
+        memset(&ref, SENTINEL, sizeof ref);
+        assert_int_equal(se23_gauss_predict(&model, &g, &s, &NOISE, SE23_INPUT_JAC_EXACT, &ref), SE23_OK);
+        assert_int_equal(se23_gauss_predict_work(&model, &g, &s, &NOISE, SE23_INPUT_JAC_EXACT, &w, &out),
+                         SE23_OK);
+        assert_memory_equal(&out, &ref, sizeof out);
+        s.w_ib_b.v[1] = (se23_real_t)NAN;
+        assert_int_equal(se23_gauss_predict_work(&model, &g, &s, &NOISE, SE23_INPUT_JAC_EXACT, &w, &out),
+                         SE23_ERR_NONFINITE);
+        assert_memory_equal(&out, &ref, sizeof out);
+    }
+}
+
 static void test_gauss_predict_rejects_bad_input_untouched(void **state)
 {
     (void)state;
@@ -1011,6 +1042,11 @@ static void test_gauss_null_arguments_return_err_null(void **state)
     assert_int_equal(se23_gauss_predict(&model, &g, NULL, &NOISE, SE23_INPUT_JAC_EXACT, &g), SE23_ERR_NULL);
     assert_int_equal(se23_gauss_predict(&model, &g, &s, NULL, SE23_INPUT_JAC_EXACT, &g), SE23_ERR_NULL);
     assert_int_equal(se23_gauss_predict(&model, &g, &s, &NOISE, SE23_INPUT_JAC_EXACT, NULL), SE23_ERR_NULL);
+    se23_predict_work_t w;
+    assert_int_equal(se23_gauss_predict_work(&model, &g, &s, &NOISE, SE23_INPUT_JAC_EXACT, NULL, &g),
+                     SE23_ERR_NULL);
+    assert_int_equal(se23_gauss_predict_work(&model, &g, &s, &NOISE, SE23_INPUT_JAC_EXACT, &w, NULL),
+                     SE23_ERR_NULL);
     assert_int_equal(se23_gauss_from_carried(NULL, &g, &g), SE23_ERR_NULL);
     assert_int_equal(se23_gauss_from_carried(&model, NULL, &g), SE23_ERR_NULL);
     assert_int_equal(se23_gauss_from_carried(&model, &g, NULL), SE23_ERR_NULL);
@@ -1037,6 +1073,7 @@ int main(void)
         cmocka_unit_test(test_gauss_check_reports_each_defect),
         cmocka_unit_test(test_gauss_propagate_rejects_bad_input_untouched),
         cmocka_unit_test(test_gauss_predict_matches_step_and_propagate),
+        cmocka_unit_test(test_gauss_predict_work_equals_predict_bit_for_bit),
         cmocka_unit_test(test_gauss_predict_rejects_bad_input_untouched),
         cmocka_unit_test(test_gauss_predict_refuses_overflow_untouched),
         cmocka_unit_test(test_gauss_from_carried_m_matches_central_differences),

@@ -531,6 +531,37 @@ static void test_kalman_update_structure_blocks(void **state)
     }
 }
 
+/* The work-area variant is the same computation: equal bits (state and
+ * NIS) for every m with a work area full of NaN (0xff bytes) or of zeros,
+ * and on a refused measurement the same status, out and nis untouched. */
+static void test_kalman_update_work_equals_update_bit_for_bit(void **state)
+{
+    (void)state;
+    se23t_rng_t rng;
+    se23t_rng_seed(&rng, 810);
+    se23_kalman_work_t w;
+    for (int rep = 0; rep < 18; ++rep) {
+        const int n = (rep % 2) ? 15 : 9;
+        const int m = 1 + rep % 9;
+        se23_gauss_t g, out, ref;
+        se23_meas_t y;
+        se23_real_t nis = SE23_R(-1), nis_ref = SE23_R(-2);
+        gt_random_gauss(&rng, n, &g);
+        random_meas(&rng, m, &y);
+        memset(&w, (rep < 9) ? 0xff : 0x00, sizeof w);
+        memset(&out, SENTINEL, sizeof out);
+        memset(&ref, SENTINEL, sizeof ref);
+        assert_int_equal(se23_kalman_update(&g, &y, &ref, &nis_ref), SE23_OK);
+        assert_int_equal(se23_kalman_update_work(&g, &y, &w, &out, &nis), SE23_OK);
+        assert_memory_equal(&out, &ref, sizeof out);
+        assert_memory_equal(&nis, &nis_ref, sizeof nis);
+        y.z[m - 1] = (se23_real_t)NAN;
+        assert_int_equal(se23_kalman_update_work(&g, &y, &w, &out, &nis), SE23_ERR_NONFINITE);
+        assert_memory_equal(&out, &ref, sizeof out);
+        assert_memory_equal(&nis, &nis_ref, sizeof nis);
+    }
+}
+
 static void test_kalman_null_arguments_return_err_null(void **state)
 {
     (void)state;
@@ -542,6 +573,11 @@ static void test_kalman_null_arguments_return_err_null(void **state)
     assert_int_equal(se23_kalman_update(NULL, &y, &g, NULL), SE23_ERR_NULL);
     assert_int_equal(se23_kalman_update(&g, NULL, &g, NULL), SE23_ERR_NULL);
     assert_int_equal(se23_kalman_update(&g, &y, NULL, NULL), SE23_ERR_NULL);
+    se23_kalman_work_t w;
+    assert_int_equal(se23_kalman_update_work(NULL, &y, &w, &g, NULL), SE23_ERR_NULL);
+    assert_int_equal(se23_kalman_update_work(&g, NULL, &w, &g, NULL), SE23_ERR_NULL);
+    assert_int_equal(se23_kalman_update_work(&g, &y, NULL, &g, NULL), SE23_ERR_NULL);
+    assert_int_equal(se23_kalman_update_work(&g, &y, &w, NULL, NULL), SE23_ERR_NULL);
 #else
     skip();
 #endif
@@ -712,6 +748,7 @@ int main(void)
         cmocka_unit_test(test_kalman_update_keeps_rotation_valid),
         cmocka_unit_test(test_kalman_update_keeps_p_psd_with_tiny_noise),
         cmocka_unit_test(test_kalman_update_structure_blocks),
+        cmocka_unit_test(test_kalman_update_work_equals_update_bit_for_bit),
         cmocka_unit_test(test_kalman_null_arguments_return_err_null),
         cmocka_unit_test(test_kalman_filter_estimates_biases_consistently),
     };

@@ -204,6 +204,35 @@ static void test_preint_unc_classic_is_opt_in(void **state)
     assert_int_equal(se23_preint_unc_correct_classic(&with, &bg, &ba, &out), SE23_OK);
 }
 
+/* The work-area variant is the same computation: two factors, one fed by
+ * se23_preint_unc_add, one by se23_preint_unc_add_work with a work area
+ * refilled with NaN (0xff bytes) or zeros before each sample, stay equal
+ * bit for bit (with the classical Jacobians); a NaN sample is refused the
+ * same way, the factor untouched. */
+static void test_preint_unc_add_work_equals_add_bit_for_bit(void **state)
+{
+    (void)state;
+    se23_preint_unc_t a, b;
+    se23_vec3_t bg, ba;
+    bias_vecs(BBAR, &bg, &ba);
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    assert_int_equal(se23_preint_unc_reset_classic(&bg, &ba, SE23_INPUT_JAC_EXACT, &a), SE23_OK);
+    assert_int_equal(se23_preint_unc_reset_classic(&bg, &ba, SE23_INPUT_JAC_EXACT, &b), SE23_OK);
+    se23_preint_work_t w;
+    static const double zero[6] = {0};
+    for (int k = 0; k < 40; ++k) {
+        se23_imu_sample_t s = raw_sample(k, zero);
+        memset(&w, (k % 2) ? 0xff : 0x00, sizeof w);
+        assert_int_equal(se23_preint_unc_add(&a, &s, &NOISE), SE23_OK);
+        assert_int_equal(se23_preint_unc_add_work(&b, &s, &NOISE, &w), SE23_OK);
+        assert_memory_equal(&a, &b, sizeof a);
+        s.f_b.v[2] = (se23_real_t)NAN;
+        assert_int_equal(se23_preint_unc_add_work(&b, &s, &NOISE, &w), SE23_ERR_NONFINITE);
+        assert_memory_equal(&a, &b, sizeof a);
+    }
+}
+
 static void test_preint_unc_add_deltas_equal_preint_add(void **state)
 {
     (void)state;
@@ -705,6 +734,9 @@ static void test_preint_unc_null_arguments_return_err_null(void **state)
     assert_int_equal(se23_preint_unc_add(NULL, &s, &QUIET), SE23_ERR_NULL);
     assert_int_equal(se23_preint_unc_add(&fu, NULL, &QUIET), SE23_ERR_NULL);
     assert_int_equal(se23_preint_unc_add(&fu, &s, NULL), SE23_ERR_NULL);
+    se23_preint_work_t w;
+    assert_int_equal(se23_preint_unc_add_work(NULL, &s, &QUIET, &w), SE23_ERR_NULL);
+    assert_int_equal(se23_preint_unc_add_work(&fu, &s, &QUIET, NULL), SE23_ERR_NULL);
     assert_int_equal(se23_preint_unc_check(NULL), SE23_ERR_NULL);
     assert_int_equal(se23_preint_unc_correct(NULL, &b, &b, &out), SE23_ERR_NULL);
     assert_int_equal(se23_preint_unc_correct(&fu, NULL, &b, &out), SE23_ERR_NULL);
@@ -726,6 +758,7 @@ int main(void)
         cmocka_unit_test(test_preint_unc_classic_is_opt_in),
         cmocka_unit_test(test_preint_unc_correct_reorthonormalises),
         cmocka_unit_test(test_preint_unc_add_refuses_overflow_untouched),
+        cmocka_unit_test(test_preint_unc_add_work_equals_add_bit_for_bit),
         cmocka_unit_test(test_preint_unc_add_deltas_equal_preint_add),
         cmocka_unit_test(test_preint_unc_bias_jacobian_matches_central_differences),
         cmocka_unit_test(test_preint_unc_cov_matches_step_by_step_propagation),
