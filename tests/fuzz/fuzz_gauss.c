@@ -212,6 +212,7 @@ static void one_predict(fz_t *f)
     n = 1 + fz_u8(f) % 16;
     for (k = 0; k < n && fz_left(f); ++k) {
         se23_imu_sample_t s;
+        se23_predict_work_t w;
         se23_status_t st, sa;
         fz_sample(f, &s);
         fz_fill(&out, sizeof out);
@@ -219,8 +220,10 @@ static void one_predict(fz_t *f)
         FZ_REQUIRE(fz_status_in(st, 4, SE23_ERR_DIM, SE23_ERR_DOMAIN, SE23_ERR_NONFINITE,
                                 SE23_ERR_DT),
                    "predict: %d", st);
+        /* In place, and with a work area of fuzzed bytes: the same call. */
         t = g;
-        sa = se23_gauss_predict(&m, &t, &s, &q, kind, &t);
+        fz_fill(&w, sizeof w);
+        sa = se23_gauss_predict_work(&m, &t, &s, &q, kind, &w, &t);
         FZ_REQUIRE(sa == st, "predict(g, g): status %d, plain %d", sa, st);
         if (st != SE23_OK) {
             FZ_REQUIRE(fz_untouched(&out, sizeof out), "predict wrote on error %d", st);

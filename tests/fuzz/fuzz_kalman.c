@@ -262,6 +262,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
     while (fz_left(&f) && updates++ < 16) {
         se23_meas_t y;
+        se23_kalman_work_t w;
         se23_real_t nis, nis_a;
         se23_status_t st, sa;
         const int want_nis = fz_u8(&f) < 224;
@@ -275,9 +276,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                                 SE23_ERR_NOT_PSD, SE23_ERR_NULL),
                    "update: %d", st);
         FZ_REQUIRE(st != SE23_ERR_NULL, "update: SE23_ERR_NULL without a NULL argument");
+        /* In place, and with a work area of fuzzed bytes: the same call. */
         memcpy(&t, &g, sizeof g);
         fz_fill(&nis_a, sizeof nis_a);
-        sa = se23_kalman_update(&t, &y, &t, want_nis ? &nis_a : NULL);
+        fz_fill(&w, sizeof w);
+        sa = se23_kalman_update_work(&t, &y, &w, &t, want_nis ? &nis_a : NULL);
         FZ_REQUIRE(sa == st, "update(g, g): status %d, plain %d", sa, st);
         if (st != SE23_OK) {
             FZ_REQUIRE(fz_untouched(&out, sizeof out) && fz_untouched(&nis, sizeof nis),

@@ -76,11 +76,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     fz_t f;
-    se23_preint_unc_t fu, before;
+    se23_preint_unc_t fu, before, copy;
+    se23_preint_work_t w;
     se23_vec3_t b_g, b_a;
     se23_input_jac_kind_t kind;
     se23_imu_noise_t q;
-    se23_status_t st;
+    se23_status_t st, sa;
     uint8_t m;
     int k, n, classic;
     fz_init(&f, data, size);
@@ -127,9 +128,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         }
         fz_sample(&f, &s);
         memcpy(&before, &fu, sizeof fu);
+        /* The work-area call on a copy, its work area fuzzed bytes: the
+         * same status and, on OK, the same factor. */
+        memcpy(&copy, &fu, sizeof fu);
+        fz_fill(&w, sizeof w);
+        sa = se23_preint_unc_add_work(&copy, &s, &q, &w);
         st = se23_preint_unc_add(&fu, &s, &q);
         FZ_REQUIRE(fz_status_in(st, 3, SE23_ERR_NONFINITE, SE23_ERR_DT, SE23_ERR_DOMAIN),
                    "add: %d", st);
+        FZ_REQUIRE(sa == st && memcmp(&copy, &fu, sizeof fu) == 0,
+                   "add_work: status %d or factor differ from add (%d)", sa, st);
         if (st != SE23_OK) {
             FZ_REQUIRE(memcmp(&fu, &before, sizeof fu) == 0, "add changed the factor on error %d",
                        st);
