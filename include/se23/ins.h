@@ -95,8 +95,8 @@
  * Memory: sizeof(se23_ins_t) = 17,392 B + SE23_INS_RING x 72 B in double,
  * 8,904 B + SE23_INS_RING x 48 B in float (26,608 / 15,048 B with the
  * default ring; README "The navigation filter"; test_ins.c asserts it),
- * the kernels' work areas included (1,512 / 756 B: they are here and not
- * on the stack of the calls, "Stack" below);
+ * the kernels' work areas included (1,512 / 756 B, kept here and not on
+ * the stack of the calls);
  * the ring must hold
  * 2 * delay_horizon / dt_nominal + 2 samples (checked by se23_ins_setup).
  * A fix replayed this way equals the same fix applied at
@@ -369,7 +369,8 @@ typedef struct {
     se23_gauss_t g;               /**< state in the model's coordinates */
     se23_gauss_t work;            /**< scratch of the updates (user's coordinates) */
     /** The kernels' work areas (work.h), here and not on the stack of the
-     *  filter calls ("Stack" above); one kernel call at a time uses them. */
+     *  filter calls (README, "The navigation filter"); one kernel call at a
+     *  time uses them. */
     union {
         se23_predict_work_t predict; /**< the prediction */
         se23_preint_work_t preint;   /**< the preintegrated factor */

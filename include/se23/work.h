@@ -10,12 +10,12 @@
  * stack, such as the navigation filter (ins.h), passes a work area of its own
  * to the _work variant instead, in memory it owns (a static object, or a
  * member of its state, as the filter does), and the call's stack drops by
- * the size of the work area (README, "Stack"). The results are the same bit
- * for bit: the plain functions are the _work ones with a work area on their
- * stack. Each holds only what is live across the call's covariance step
- * (the increment's pieces of a prediction are on the stack of a callee
- * that returns before it). The Kalman update's work area is
- * se23_kalman_work_t (kalman.h).
+ * the size of the work area (README, "Embedding in a firmware build"). The
+ * results are the same bit for bit: the plain functions are the _work ones
+ * with a work area on their stack. Each holds only what is live across
+ * the call's covariance step (the increment's pieces of a prediction are
+ * on the stack of a callee that returns before it). The Kalman update's
+ * work area is se23_kalman_work_t (kalman.h).
  *
  * Contents. Scratch: every call writes it before reading it, nothing is
  * carried from one call to the next, and its contents after a call (OK or
