@@ -177,6 +177,16 @@ se23_status_t se23_predict_inputs(const se23_earth_model_t *model, const se23_po
                                   const se23_imu_noise_t *noise, se23_input_jac_kind_t kind,
                                   se23_predict_work_t *w);
 
+/**
+ * The increment U of the corrected sample c (se23_imu_increment_parts) and
+ * its Bt of the given kind: the input half of a preintegration step
+ * (se23_preint_unc_add). A call of its own, as se23_predict_inputs, so
+ * that the increment's parts are not on the stack under the covariance
+ * kernels. No checks (the caller tests U and Bt for overflow).
+ */
+void se23_sample_inputs(se23_input_jac_kind_t kind, const se23_imu_sample_t *c,
+                        se23_pose_t *U, se23_input_blocks_t *Bt);
+
 /** B = D Bt, the public form of the input matrix (gauss.h). */
 void se23_input_blocks_rotate(const se23_mat3_t *R,
                               const se23_input_blocks_t *Bt, se23_mat9x6_t *B);

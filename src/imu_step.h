@@ -11,6 +11,17 @@
 #include "se23/imu.h"
 #include "so3_series.h"
 
+/** What the exact increment of one sample computed on the way. */
+typedef struct {
+    se23_vec3_t th;       /**< w dt [rad] */
+    se23_real_t t;        /**< |th| */
+    se23_so3_coeffs_t c;  /**< c1..c4 at t */
+    se23_mat3_t J;        /**< J_l(th) */
+    se23_mat3_t H;        /**< H(th) */
+    int tame;             /**< se23_sample_tame of the sample (set by
+                               se23_imu_step_ups only) */
+} se23_increment_parts_t;
+
 /** SE23_ERR_NONFINITE unless the sample is finite, SE23_ERR_DT unless
  *  0 < dt <= dt_max. */
 se23_status_t se23_imu_sample_check(const se23_imu_sample_t *s, se23_real_t dt_max);

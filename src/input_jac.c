@@ -261,6 +261,14 @@ se23_status_t se23_gauss_input_jac(se23_input_jac_kind_t kind,
     return SE23_OK;
 }
 
+void se23_sample_inputs(se23_input_jac_kind_t kind, const se23_imu_sample_t *c,
+                        se23_pose_t *U, se23_input_blocks_t *Bt)
+{
+    se23_increment_parts_t parts;
+    se23_imu_increment_parts(c, U, &parts);
+    se23_input_blocks(kind, &parts, &U->R, &c->f_b, c->dt, Bt);
+}
+
 se23_status_t se23_predict_inputs(const se23_earth_model_t *model, const se23_pose_t *T,
                                   const se23_imu_noise_t *noise, se23_input_jac_kind_t kind,
                                   se23_predict_work_t *w)

@@ -147,6 +147,7 @@ se23_status_t se23_preint_unc_add_work(se23_preint_unc_t *fu,
     SE23_CHECK_NOT_NULL(s);
     SE23_CHECK_NOT_NULL(noise);
     SE23_CHECK_NOT_NULL(w);
+    se23_step_inputs_t *in = &w->in;
 #if SE23_CFG_DEEP_CHECKS
     se23_status_t st = se23_preint_unc_check(fu);
     if (st == SE23_OK) {
@@ -156,12 +157,11 @@ se23_status_t se23_preint_unc_add_work(se23_preint_unc_t *fu,
     se23_status_t st = se23_imu_sample_check(s, SE23_R(SE23_CFG_DT_MAX));
 #endif
     if (st == SE23_OK) {
-        st = se23_step_noise(noise, s->dt, &w->in.q);
+        st = se23_step_noise(noise, s->dt, &in->q);
     }
     if (st != SE23_OK) {
         return st;
     }
-    se23_step_inputs_t *in = &w->in;
     se23_imu_sample_t *c = &in->c;
     se23_pose_t *U = &in->U;
     se23_imu_sample_corrected(s, &fu->b_g, &fu->b_a, c);
@@ -169,8 +169,7 @@ se23_status_t se23_preint_unc_add_work(se23_preint_unc_t *fu,
     if (tame == 0 && (!se23_all_finite(c->w_ib_b.v, 3) || !se23_all_finite(c->f_b.v, 3))) {
         return SE23_ERR_NONFINITE; /* finite reading + bias overflowed */
     }
-    se23_imu_increment_parts(c, U, &w->parts);
-    se23_input_blocks(fu->kind, &w->parts, &U->R, &c->f_b, c->dt, &in->Bt);
+    se23_sample_inputs(fu->kind, c, U, &in->Bt);
     const se23_real_t b = se23_input_blocks_bound(&c->f_b, c->dt);
     if ((tame == 0 && !se23_pose_finite(U)) || !se23_input_blocks_finite(&in->Bt, tame) ||
         !se23_cov_step_fits(U, c->dt, b, &in->q, SE23_GAUSS_N_POSE, fu->P.m, 9)) {

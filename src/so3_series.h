@@ -21,7 +21,6 @@
 #define SE23_SO3_SERIES_H
 
 #include "se23/types.h"
-#include "se23/work.h"
 
 /** Below this angle (IMU samples: |w| dt is rarely above 0.05 rad) every
  *  series of the library is summed with SE23_SERIES_SMALL_TERMS terms: the
@@ -33,6 +32,14 @@
 #else
 #define SE23_SERIES_SMALL_TERMS 3
 #endif
+
+/** The four sin/cos coefficients at one angle. */
+typedef struct {
+    se23_real_t c1;
+    se23_real_t c2;
+    se23_real_t c3;
+    se23_real_t c4;
+} se23_so3_coeffs_t;
 
 /** c1..c4 at theta >= 0. */
 void se23_so3_coeffs(se23_real_t theta, se23_so3_coeffs_t *c);

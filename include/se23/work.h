@@ -13,9 +13,9 @@
  * the size of the work area (README, "Embedding in a firmware build"). The
  * results are the same bit for bit: the plain functions are the _work ones
  * with a work area on their stack. Each holds only what is live across
- * the call's covariance step (the increment's pieces of a prediction are
- * on the stack of a callee that returns before it). The Kalman update's
- * work area is se23_kalman_work_t (kalman.h).
+ * the call's covariance step (the pieces of the increment that the input
+ * matrix reuses are on the stack of a callee that returns before it). The
+ * Kalman update's work area is se23_kalman_work_t (kalman.h).
  *
  * Contents. Scratch: every call writes it before reading it, nothing is
  * carried from one call to the next, and its contents after a call (OK or
@@ -32,26 +32,6 @@
 #ifdef __cplusplus
 extern "C" {
 #endif
-
-/** The four sin/cos coefficients of the SO(3) series at one angle
- *  (src/so3_series.h). */
-typedef struct {
-    se23_real_t c1;
-    se23_real_t c2;
-    se23_real_t c3;
-    se23_real_t c4;
-} se23_so3_coeffs_t;
-
-/** What the exact increment of one sample computed on the way. */
-typedef struct {
-    se23_vec3_t th;       /**< w dt [rad] */
-    se23_real_t t;        /**< |th| */
-    se23_so3_coeffs_t c;  /**< c1..c4 at t */
-    se23_mat3_t J;        /**< J_l(th) */
-    se23_mat3_t H;        /**< H(th) */
-    int tame;             /**< se23_sample_tame of the sample (set by
-                               se23_imu_step_ups only) */
-} se23_increment_parts_t;
 
 /** Bt, the 9x6 input matrix before the rotation D: blk[i][k] is block row i
  *  (phi, nu, rho) and block column k (0: gyro, 1: accel). blk[0][1] is
@@ -85,7 +65,6 @@ typedef struct {
 /** Work area of se23_preint_unc_add_work (file comment). */
 typedef struct {
     se23_step_inputs_t in;
-    se23_increment_parts_t parts; /**< the pieces of U that Bt reuses */
 } se23_preint_work_t;
 
 #ifdef __cplusplus
