@@ -114,6 +114,11 @@ static void update_finish(const se23_gauss_t *g, const se23_real_t *dx, se23_rea
     }
 }
 
+/* Not a wrapper of se23_kalman_update_work on purpose: here the work area lives
+ * only in se23_kalman_cov's frame, which has returned before the retraction
+ * (se23_exp -> sincos) runs, so the two never stack. As a wrapper holding the
+ * work area in this frame the call measured 1,304 B on M4F (make gates-target),
+ * over the 1,024 B budget. */
 se23_status_t se23_kalman_update(const se23_gauss_t *g, const se23_meas_t *y,
                                  se23_gauss_t *out, se23_real_t *nis)
 {
