@@ -77,11 +77,13 @@ lib: $(BUILD)/lib-host-double/libse23.a $(BUILD)/lib-host-float/libse23.a
 cross: $(BUILD)/lib-m4f-float/libse23.a $(BUILD)/lib-m7-double/libse23.a
 
 # CMake builds the tests and the Eigen reference, one tree per precision.
+# A configure that fails (a package missing) leaves no cache behind, so the
+# next make configures again instead of building a tree that has no Makefile.
 # $(call cmake_tree,name,SE23_DOUBLE ON|OFF,extra cmake options)
 define cmake_tree
 $(BUILD)/cmake-$(1)/CMakeCache.txt: CMakeLists.txt
 	cmake -S . -B $(BUILD)/cmake-$(1) -DSE23_DOUBLE=$(2) -DSE23_BUILD_TESTS=ON $(3) \
-	      -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+	      -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null || { rm -f $$@; exit 1; }
 .PHONY: tests-$(1)
 tests-$(1): $(BUILD)/cmake-$(1)/CMakeCache.txt
 	cmake --build $(BUILD)/cmake-$(1) -j $(JOBS)
