@@ -199,9 +199,9 @@ void se23_cov_step(const se23_pose_t *U, se23_real_t dt,
 {
     se23_cov_pose_t S;
     if (n == SE23_GAUSS_N_BIAS) {
-        se23_cov_step15_gyro(U, dt, Bt, q, P, out, stride, &S);
-        se23_cov_step15_accel(U, dt, Bt, q, P, out, stride, &S);
-        se23_cov_step15_bias(q, P, out, stride);
+        se23_cov_step15_gyro(U, dt, Bt, q, P, out, &S);
+        se23_cov_step15_accel(U, dt, Bt, q, P, out, &S);
+        se23_cov_step15_bias(q, P, out);
     } else {
         se23_cov_step9_noise(Bt, q, &S);
     }

@@ -92,9 +92,10 @@ se23_real_t se23_input_blocks_bound(const se23_vec3_t *f, se23_real_t dt);
 
 /**
  * out = Phi P Phi^T + diag(B_k N B_k^T, W) on the leading n x n blocks
- * (n = 9 or 15, row stride `stride`), reading only P's upper triangle and
- * writing both triangles of out (file comment). out may alias P. No
- * checks; cannot fail.
+ * (n = 9 or 15, row stride `stride`; for 15 states the stride must be
+ * SE23_GAUSS_NMAX, which the bias stages have built in), reading only P's
+ * upper triangle and writing both triangles of out (file comment). out may
+ * alias P. No checks; cannot fail.
  */
 void se23_cov_step(const se23_pose_t *U, se23_real_t dt,
                    const se23_input_blocks_t *Bt, const se23_step_noise_t *q,
@@ -121,12 +122,11 @@ void se23_cov_step9_noise(const se23_input_blocks_t *Bt, const se23_step_noise_t
                           se23_cov_pose_t *S);
 void se23_cov_step15_gyro(const se23_pose_t *U, se23_real_t dt, const se23_input_blocks_t *Bt,
                           const se23_step_noise_t *q, const se23_real_t *P, se23_real_t *out,
-                          int stride, se23_cov_pose_t *S);
+                          se23_cov_pose_t *S);
 void se23_cov_step15_accel(const se23_pose_t *U, se23_real_t dt, const se23_input_blocks_t *Bt,
                            const se23_step_noise_t *q, const se23_real_t *P, se23_real_t *out,
-                           int stride, se23_cov_pose_t *S);
-void se23_cov_step15_bias(const se23_step_noise_t *q, const se23_real_t *P, se23_real_t *out,
-                          int stride);
+                           se23_cov_pose_t *S);
+void se23_cov_step15_bias(const se23_step_noise_t *q, const se23_real_t *P, se23_real_t *out);
 void se23_cov_shear_pose(const se23_pose_t *U, se23_real_t dt, const se23_real_t *P, int stride,
                          se23_cov_pose_t *S);
 void se23_cov_rotate_pose(const se23_pose_t *U, const se23_cov_pose_t *S, se23_real_t *out,

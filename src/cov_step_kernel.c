@@ -223,71 +223,62 @@ void se23_cov_step9_noise(const se23_input_blocks_t *Bt, const se23_step_noise_t
  * has them); reads 42 entries of P, stores 54. */
 void se23_cov_step15_gyro(const se23_pose_t *U, se23_real_t dt, const se23_input_blocks_t *Bt,
                           const se23_step_noise_t *q, const se23_real_t *P, se23_real_t *out,
-                          int stride, se23_cov_pose_t *S)
+                          se23_cov_pose_t *S)
 {
     const se23_real_t p0_9 = P[9];
-    const se23_real_t t1 = p0_9 + Bt->blk[0][0].m[0][0] * P[(stride * 9) + 9]
-                           + Bt->blk[0][0].m[0][1] * P[(stride * 9) + 10]
-                           + Bt->blk[0][0].m[0][2] * P[(stride * 9) + 11];
-    const se23_real_t p1_9 = P[stride + 9];
-    const se23_real_t t2 = p1_9 + Bt->blk[0][0].m[1][0] * P[(stride * 9) + 9]
-                           + Bt->blk[0][0].m[1][1] * P[(stride * 9) + 10]
-                           + Bt->blk[0][0].m[1][2] * P[(stride * 9) + 11];
-    const se23_real_t p2_9 = P[(stride * 2) + 9];
-    const se23_real_t t3 = p2_9 + Bt->blk[0][0].m[2][0] * P[(stride * 9) + 9]
-                           + Bt->blk[0][0].m[2][1] * P[(stride * 9) + 10]
-                           + Bt->blk[0][0].m[2][2] * P[(stride * 9) + 11];
+    const se23_real_t t1 = p0_9 + Bt->blk[0][0].m[0][0] * P[144]
+                           + Bt->blk[0][0].m[0][1] * P[145] + Bt->blk[0][0].m[0][2] * P[146];
+    const se23_real_t p1_9 = P[24];
+    const se23_real_t t2 = p1_9 + Bt->blk[0][0].m[1][0] * P[144]
+                           + Bt->blk[0][0].m[1][1] * P[145] + Bt->blk[0][0].m[1][2] * P[146];
+    const se23_real_t p2_9 = P[39];
+    const se23_real_t t3 = p2_9 + Bt->blk[0][0].m[2][0] * P[144]
+                           + Bt->blk[0][0].m[2][1] * P[145] + Bt->blk[0][0].m[2][2] * P[146];
     const se23_real_t t4 = U->R.m[0][0] * t1 + U->R.m[1][0] * t2 + U->R.m[2][0] * t3;
     const se23_real_t p0_10 = P[10];
-    const se23_real_t t5 = p0_10 + Bt->blk[0][0].m[0][0] * P[(stride * 9) + 10]
-                           + Bt->blk[0][0].m[0][1] * P[(stride * 10) + 10]
-                           + Bt->blk[0][0].m[0][2] * P[(stride * 10) + 11];
+    const se23_real_t t5 = p0_10 + Bt->blk[0][0].m[0][0] * P[145]
+                           + Bt->blk[0][0].m[0][1] * P[160] + Bt->blk[0][0].m[0][2] * P[161];
     out[9] = t4;
-    out[(stride * 9)] = t4;
-    const se23_real_t p1_10 = P[stride + 10];
-    const se23_real_t t6 = p1_10 + Bt->blk[0][0].m[1][0] * P[(stride * 9) + 10]
-                           + Bt->blk[0][0].m[1][1] * P[(stride * 10) + 10]
-                           + Bt->blk[0][0].m[1][2] * P[(stride * 10) + 11];
-    const se23_real_t p2_10 = P[(stride * 2) + 10];
-    const se23_real_t t7 = p2_10 + Bt->blk[0][0].m[2][0] * P[(stride * 9) + 10]
-                           + Bt->blk[0][0].m[2][1] * P[(stride * 10) + 10]
-                           + Bt->blk[0][0].m[2][2] * P[(stride * 10) + 11];
+    out[135] = t4;
+    const se23_real_t p1_10 = P[25];
+    const se23_real_t t6 = p1_10 + Bt->blk[0][0].m[1][0] * P[145]
+                           + Bt->blk[0][0].m[1][1] * P[160] + Bt->blk[0][0].m[1][2] * P[161];
+    const se23_real_t p2_10 = P[40];
+    const se23_real_t t7 = p2_10 + Bt->blk[0][0].m[2][0] * P[145]
+                           + Bt->blk[0][0].m[2][1] * P[160] + Bt->blk[0][0].m[2][2] * P[161];
     const se23_real_t t8 = U->R.m[0][0] * t5 + U->R.m[1][0] * t6 + U->R.m[2][0] * t7;
     const se23_real_t p0_11 = P[11];
-    const se23_real_t t9 = p0_11 + Bt->blk[0][0].m[0][0] * P[(stride * 9) + 11]
-                           + Bt->blk[0][0].m[0][1] * P[(stride * 10) + 11]
-                           + Bt->blk[0][0].m[0][2] * P[(stride * 11) + 11];
+    const se23_real_t t9 = p0_11 + Bt->blk[0][0].m[0][0] * P[146]
+                           + Bt->blk[0][0].m[0][1] * P[161] + Bt->blk[0][0].m[0][2] * P[176];
     out[10] = t8;
-    out[(stride * 10)] = t8;
-    const se23_real_t p1_11 = P[stride + 11];
-    const se23_real_t t10 = p1_11 + Bt->blk[0][0].m[1][0] * P[(stride * 9) + 11]
-                            + Bt->blk[0][0].m[1][1] * P[(stride * 10) + 11]
-                            + Bt->blk[0][0].m[1][2] * P[(stride * 11) + 11];
-    const se23_real_t p2_11 = P[(stride * 2) + 11];
-    const se23_real_t t11 = p2_11 + Bt->blk[0][0].m[2][0] * P[(stride * 9) + 11]
-                            + Bt->blk[0][0].m[2][1] * P[(stride * 10) + 11]
-                            + Bt->blk[0][0].m[2][2] * P[(stride * 11) + 11];
+    out[150] = t8;
+    const se23_real_t p1_11 = P[26];
+    const se23_real_t t10 = p1_11 + Bt->blk[0][0].m[1][0] * P[146]
+                            + Bt->blk[0][0].m[1][1] * P[161] + Bt->blk[0][0].m[1][2] * P[176];
+    const se23_real_t p2_11 = P[41];
+    const se23_real_t t11 = p2_11 + Bt->blk[0][0].m[2][0] * P[146]
+                            + Bt->blk[0][0].m[2][1] * P[161] + Bt->blk[0][0].m[2][2] * P[176];
     const se23_real_t t12 = U->R.m[0][0] * t9 + U->R.m[1][0] * t10 + U->R.m[2][0] * t11;
     const se23_real_t t13 = U->R.m[0][1] * t1 + U->R.m[1][1] * t2 + U->R.m[2][1] * t3;
     out[11] = t12;
-    out[(stride * 11)] = t12;
+    out[165] = t12;
     const se23_real_t t14 = U->R.m[0][1] * t5 + U->R.m[1][1] * t6 + U->R.m[2][1] * t7;
-    out[stride + 9] = t13;
-    out[(stride * 9) + 1] = t13;
+    out[24] = t13;
+    out[136] = t13;
     const se23_real_t t15 = U->R.m[0][1] * t9 + U->R.m[1][1] * t10 + U->R.m[2][1] * t11;
-    out[stride + 10] = t14;
-    out[(stride * 10) + 1] = t14;
+    out[25] = t14;
+    out[151] = t14;
     const se23_real_t t16 = U->R.m[0][2] * t1 + U->R.m[1][2] * t2 + U->R.m[2][2] * t3;
-    out[stride + 11] = t15;
-    out[(stride * 11) + 1] = t15;
+    out[26] = t15;
+    out[166] = t15;
     const se23_real_t t17 = U->R.m[0][2] * t5 + U->R.m[1][2] * t6 + U->R.m[2][2] * t7;
-    out[(stride * 2) + 9] = t16;
-    out[(stride * 9) + 2] = t16;
+    out[39] = t16;
+    out[137] = t16;
     const se23_real_t t18 = U->R.m[0][2] * t9 + U->R.m[1][2] * t10 + U->R.m[2][2] * t11;
-    out[(stride * 2) + 10] = t17;
-    out[(stride * 10) + 2] = t17;
-    out[(stride * 2) + 11] = t18;
-    out[(stride * 11) + 2] = t18;
+    out[40] = t17;
+    out[152] = t17;
+    out[41] = t18;
+    out[167] = t18;
     const se23_real_t t19 = t1 + q->qg * Bt->blk[0][0].m[0][0];
     const se23_real_t t20 = t5 + q->qg * Bt->blk[0][0].m[0][1];
     const se23_real_t t21 = t9 + q->qg * Bt->blk[0][0].m[0][2];
@@ -321,105 +312,87 @@ void se23_cov_step15_gyro(const se23_pose_t *U, se23_real_t dt, const se23_input
                             + Bt->blk[0][0].m[2][2] * t29 + p2_9 * Bt->blk[0][0].m[2][0]
                             + p2_10 * Bt->blk[0][0].m[2][1] + p2_11 * Bt->blk[0][0].m[2][2];
     S->e[5] = t33;
-    const se23_real_t p3_9 = P[(stride * 3) + 9];
+    const se23_real_t p3_9 = P[54];
     const se23_real_t t34 = p3_9 + U->v.v[2] * p1_9 - U->v.v[1] * p2_9;
-    const se23_real_t t35 = t34 + Bt->blk[1][0].m[0][0] * P[(stride * 9) + 9]
-                            + Bt->blk[1][0].m[0][1] * P[(stride * 9) + 10]
-                            + Bt->blk[1][0].m[0][2] * P[(stride * 9) + 11]
-                            + Bt->blk[1][1].m[0][0] * P[(stride * 9) + 12]
-                            + Bt->blk[1][1].m[0][1] * P[(stride * 9) + 13]
-                            + Bt->blk[1][1].m[0][2] * P[(stride * 9) + 14];
-    const se23_real_t p4_9 = P[(stride * 4) + 9];
+    const se23_real_t t35 = t34 + Bt->blk[1][0].m[0][0] * P[144]
+                            + Bt->blk[1][0].m[0][1] * P[145] + Bt->blk[1][0].m[0][2] * P[146]
+                            + Bt->blk[1][1].m[0][0] * P[147] + Bt->blk[1][1].m[0][1] * P[148]
+                            + Bt->blk[1][1].m[0][2] * P[149];
+    const se23_real_t p4_9 = P[69];
     const se23_real_t t36 = p4_9 - U->v.v[2] * p0_9 + U->v.v[0] * p2_9;
-    const se23_real_t t37 = t36 + Bt->blk[1][0].m[1][0] * P[(stride * 9) + 9]
-                            + Bt->blk[1][0].m[1][1] * P[(stride * 9) + 10]
-                            + Bt->blk[1][0].m[1][2] * P[(stride * 9) + 11]
-                            + Bt->blk[1][1].m[1][0] * P[(stride * 9) + 12]
-                            + Bt->blk[1][1].m[1][1] * P[(stride * 9) + 13]
-                            + Bt->blk[1][1].m[1][2] * P[(stride * 9) + 14];
-    const se23_real_t p5_9 = P[(stride * 5) + 9];
+    const se23_real_t t37 = t36 + Bt->blk[1][0].m[1][0] * P[144]
+                            + Bt->blk[1][0].m[1][1] * P[145] + Bt->blk[1][0].m[1][2] * P[146]
+                            + Bt->blk[1][1].m[1][0] * P[147] + Bt->blk[1][1].m[1][1] * P[148]
+                            + Bt->blk[1][1].m[1][2] * P[149];
+    const se23_real_t p5_9 = P[84];
     const se23_real_t t38 = p5_9 + U->v.v[1] * p0_9 - U->v.v[0] * p1_9;
-    const se23_real_t t39 = t38 + Bt->blk[1][0].m[2][0] * P[(stride * 9) + 9]
-                            + Bt->blk[1][0].m[2][1] * P[(stride * 9) + 10]
-                            + Bt->blk[1][0].m[2][2] * P[(stride * 9) + 11]
-                            + Bt->blk[1][1].m[2][0] * P[(stride * 9) + 12]
-                            + Bt->blk[1][1].m[2][1] * P[(stride * 9) + 13]
-                            + Bt->blk[1][1].m[2][2] * P[(stride * 9) + 14];
+    const se23_real_t t39 = t38 + Bt->blk[1][0].m[2][0] * P[144]
+                            + Bt->blk[1][0].m[2][1] * P[145] + Bt->blk[1][0].m[2][2] * P[146]
+                            + Bt->blk[1][1].m[2][0] * P[147] + Bt->blk[1][1].m[2][1] * P[148]
+                            + Bt->blk[1][1].m[2][2] * P[149];
     const se23_real_t t40 = U->R.m[0][0] * t35 + U->R.m[1][0] * t37 + U->R.m[2][0] * t39;
-    const se23_real_t p3_10 = P[(stride * 3) + 10];
+    const se23_real_t p3_10 = P[55];
     const se23_real_t t41 = p3_10 + U->v.v[2] * p1_10 - U->v.v[1] * p2_10;
-    out[(stride * 3) + 9] = t40;
-    out[(stride * 9) + 3] = t40;
-    const se23_real_t t42 = t41 + Bt->blk[1][0].m[0][0] * P[(stride * 9) + 10]
-                            + Bt->blk[1][0].m[0][1] * P[(stride * 10) + 10]
-                            + Bt->blk[1][0].m[0][2] * P[(stride * 10) + 11]
-                            + Bt->blk[1][1].m[0][0] * P[(stride * 10) + 12]
-                            + Bt->blk[1][1].m[0][1] * P[(stride * 10) + 13]
-                            + Bt->blk[1][1].m[0][2] * P[(stride * 10) + 14];
-    const se23_real_t p4_10 = P[(stride * 4) + 10];
+    out[54] = t40;
+    out[138] = t40;
+    const se23_real_t t42 = t41 + Bt->blk[1][0].m[0][0] * P[145]
+                            + Bt->blk[1][0].m[0][1] * P[160] + Bt->blk[1][0].m[0][2] * P[161]
+                            + Bt->blk[1][1].m[0][0] * P[162] + Bt->blk[1][1].m[0][1] * P[163]
+                            + Bt->blk[1][1].m[0][2] * P[164];
+    const se23_real_t p4_10 = P[70];
     const se23_real_t t43 = p4_10 - U->v.v[2] * p0_10 + U->v.v[0] * p2_10;
-    const se23_real_t t44 = t43 + Bt->blk[1][0].m[1][0] * P[(stride * 9) + 10]
-                            + Bt->blk[1][0].m[1][1] * P[(stride * 10) + 10]
-                            + Bt->blk[1][0].m[1][2] * P[(stride * 10) + 11]
-                            + Bt->blk[1][1].m[1][0] * P[(stride * 10) + 12]
-                            + Bt->blk[1][1].m[1][1] * P[(stride * 10) + 13]
-                            + Bt->blk[1][1].m[1][2] * P[(stride * 10) + 14];
-    const se23_real_t p5_10 = P[(stride * 5) + 10];
+    const se23_real_t t44 = t43 + Bt->blk[1][0].m[1][0] * P[145]
+                            + Bt->blk[1][0].m[1][1] * P[160] + Bt->blk[1][0].m[1][2] * P[161]
+                            + Bt->blk[1][1].m[1][0] * P[162] + Bt->blk[1][1].m[1][1] * P[163]
+                            + Bt->blk[1][1].m[1][2] * P[164];
+    const se23_real_t p5_10 = P[85];
     const se23_real_t t45 = p5_10 + U->v.v[1] * p0_10 - U->v.v[0] * p1_10;
-    const se23_real_t t46 = t45 + Bt->blk[1][0].m[2][0] * P[(stride * 9) + 10]
-                            + Bt->blk[1][0].m[2][1] * P[(stride * 10) + 10]
-                            + Bt->blk[1][0].m[2][2] * P[(stride * 10) + 11]
-                            + Bt->blk[1][1].m[2][0] * P[(stride * 10) + 12]
-                            + Bt->blk[1][1].m[2][1] * P[(stride * 10) + 13]
-                            + Bt->blk[1][1].m[2][2] * P[(stride * 10) + 14];
+    const se23_real_t t46 = t45 + Bt->blk[1][0].m[2][0] * P[145]
+                            + Bt->blk[1][0].m[2][1] * P[160] + Bt->blk[1][0].m[2][2] * P[161]
+                            + Bt->blk[1][1].m[2][0] * P[162] + Bt->blk[1][1].m[2][1] * P[163]
+                            + Bt->blk[1][1].m[2][2] * P[164];
     const se23_real_t t47 = U->R.m[0][0] * t42 + U->R.m[1][0] * t44 + U->R.m[2][0] * t46;
-    const se23_real_t p3_11 = P[(stride * 3) + 11];
+    const se23_real_t p3_11 = P[56];
     const se23_real_t t48 = p3_11 + U->v.v[2] * p1_11 - U->v.v[1] * p2_11;
-    out[(stride * 3) + 10] = t47;
-    out[(stride * 10) + 3] = t47;
-    const se23_real_t t49 = t48 + Bt->blk[1][0].m[0][0] * P[(stride * 9) + 11]
-                            + Bt->blk[1][0].m[0][1] * P[(stride * 10) + 11]
-                            + Bt->blk[1][0].m[0][2] * P[(stride * 11) + 11]
-                            + Bt->blk[1][1].m[0][0] * P[(stride * 11) + 12]
-                            + Bt->blk[1][1].m[0][1] * P[(stride * 11) + 13]
-                            + Bt->blk[1][1].m[0][2] * P[(stride * 11) + 14];
-    const se23_real_t p4_11 = P[(stride * 4) + 11];
+    out[55] = t47;
+    out[153] = t47;
+    const se23_real_t t49 = t48 + Bt->blk[1][0].m[0][0] * P[146]
+                            + Bt->blk[1][0].m[0][1] * P[161] + Bt->blk[1][0].m[0][2] * P[176]
+                            + Bt->blk[1][1].m[0][0] * P[177] + Bt->blk[1][1].m[0][1] * P[178]
+                            + Bt->blk[1][1].m[0][2] * P[179];
+    const se23_real_t p4_11 = P[71];
     const se23_real_t t50 = p4_11 - U->v.v[2] * p0_11 + U->v.v[0] * p2_11;
-    const se23_real_t t51 = t50 + Bt->blk[1][0].m[1][0] * P[(stride * 9) + 11]
-                            + Bt->blk[1][0].m[1][1] * P[(stride * 10) + 11]
-                            + Bt->blk[1][0].m[1][2] * P[(stride * 11) + 11]
-                            + Bt->blk[1][1].m[1][0] * P[(stride * 11) + 12]
-                            + Bt->blk[1][1].m[1][1] * P[(stride * 11) + 13]
-                            + Bt->blk[1][1].m[1][2] * P[(stride * 11) + 14];
-    const se23_real_t p5_11 = P[(stride * 5) + 11];
+    const se23_real_t t51 = t50 + Bt->blk[1][0].m[1][0] * P[146]
+                            + Bt->blk[1][0].m[1][1] * P[161] + Bt->blk[1][0].m[1][2] * P[176]
+                            + Bt->blk[1][1].m[1][0] * P[177] + Bt->blk[1][1].m[1][1] * P[178]
+                            + Bt->blk[1][1].m[1][2] * P[179];
+    const se23_real_t p5_11 = P[86];
     const se23_real_t t52 = p5_11 + U->v.v[1] * p0_11 - U->v.v[0] * p1_11;
-    const se23_real_t t53 = t52 + Bt->blk[1][0].m[2][0] * P[(stride * 9) + 11]
-                            + Bt->blk[1][0].m[2][1] * P[(stride * 10) + 11]
-                            + Bt->blk[1][0].m[2][2] * P[(stride * 11) + 11]
-                            + Bt->blk[1][1].m[2][0] * P[(stride * 11) + 12]
-                            + Bt->blk[1][1].m[2][1] * P[(stride * 11) + 13]
-                            + Bt->blk[1][1].m[2][2] * P[(stride * 11) + 14];
+    const se23_real_t t53 = t52 + Bt->blk[1][0].m[2][0] * P[146]
+                            + Bt->blk[1][0].m[2][1] * P[161] + Bt->blk[1][0].m[2][2] * P[176]
+                            + Bt->blk[1][1].m[2][0] * P[177] + Bt->blk[1][1].m[2][1] * P[178]
+                            + Bt->blk[1][1].m[2][2] * P[179];
     const se23_real_t t54 = U->R.m[0][0] * t49 + U->R.m[1][0] * t51 + U->R.m[2][0] * t53;
     const se23_real_t t55 = U->R.m[0][1] * t35 + U->R.m[1][1] * t37 + U->R.m[2][1] * t39;
-    out[(stride * 3) + 11] = t54;
-    out[(stride * 11) + 3] = t54;
+    out[56] = t54;
+    out[168] = t54;
     const se23_real_t t56 = U->R.m[0][1] * t42 + U->R.m[1][1] * t44 + U->R.m[2][1] * t46;
-    out[(stride * 4) + 9] = t55;
-    out[(stride * 9) + 4] = t55;
+    out[69] = t55;
+    out[139] = t55;
     const se23_real_t t57 = U->R.m[0][1] * t49 + U->R.m[1][1] * t51 + U->R.m[2][1] * t53;
-    out[(stride * 4) + 10] = t56;
-    out[(stride * 10) + 4] = t56;
+    out[70] = t56;
+    out[154] = t56;
     const se23_real_t t58 = U->R.m[0][2] * t35 + U->R.m[1][2] * t37 + U->R.m[2][2] * t39;
-    out[(stride * 4) + 11] = t57;
-    out[(stride * 11) + 4] = t57;
+    out[71] = t57;
+    out[169] = t57;
     const se23_real_t t59 = U->R.m[0][2] * t42 + U->R.m[1][2] * t44 + U->R.m[2][2] * t46;
-    out[(stride * 5) + 9] = t58;
-    out[(stride * 9) + 5] = t58;
+    out[84] = t58;
+    out[140] = t58;
     const se23_real_t t60 = U->R.m[0][2] * t49 + U->R.m[1][2] * t51 + U->R.m[2][2] * t53;
-    out[(stride * 5) + 10] = t59;
-    out[(stride * 10) + 5] = t59;
-    out[(stride * 5) + 11] = t60;
-    out[(stride * 11) + 5] = t60;
+    out[85] = t59;
+    out[155] = t59;
+    out[86] = t60;
+    out[170] = t60;
     const se23_real_t t61 = t35 + q->qg * Bt->blk[1][0].m[0][0];
     const se23_real_t t62 = t42 + q->qg * Bt->blk[1][0].m[0][1];
     const se23_real_t t63 = t49 + q->qg * Bt->blk[1][0].m[0][2];
@@ -489,105 +462,87 @@ void se23_cov_step15_gyro(const se23_pose_t *U, se23_real_t dt, const se23_input
                             + Bt->blk[1][0].m[2][2] * t71 + t38 * Bt->blk[1][0].m[2][0]
                             + t45 * Bt->blk[1][0].m[2][1] + t52 * Bt->blk[1][0].m[2][2];
     S->e[29] = t84;
-    const se23_real_t p6_9 = P[(stride * 6) + 9];
+    const se23_real_t p6_9 = P[99];
     const se23_real_t t85 = p6_9 + dt * p3_9 + U->p.v[2] * p1_9 - U->p.v[1] * p2_9;
-    const se23_real_t t86 = t85 + Bt->blk[2][0].m[0][0] * P[(stride * 9) + 9]
-                            + Bt->blk[2][0].m[0][1] * P[(stride * 9) + 10]
-                            + Bt->blk[2][0].m[0][2] * P[(stride * 9) + 11]
-                            + Bt->blk[2][1].m[0][0] * P[(stride * 9) + 12]
-                            + Bt->blk[2][1].m[0][1] * P[(stride * 9) + 13]
-                            + Bt->blk[2][1].m[0][2] * P[(stride * 9) + 14];
-    const se23_real_t p7_9 = P[(stride * 7) + 9];
+    const se23_real_t t86 = t85 + Bt->blk[2][0].m[0][0] * P[144]
+                            + Bt->blk[2][0].m[0][1] * P[145] + Bt->blk[2][0].m[0][2] * P[146]
+                            + Bt->blk[2][1].m[0][0] * P[147] + Bt->blk[2][1].m[0][1] * P[148]
+                            + Bt->blk[2][1].m[0][2] * P[149];
+    const se23_real_t p7_9 = P[114];
     const se23_real_t t87 = p7_9 + dt * p4_9 - U->p.v[2] * p0_9 + U->p.v[0] * p2_9;
-    const se23_real_t t88 = t87 + Bt->blk[2][0].m[1][0] * P[(stride * 9) + 9]
-                            + Bt->blk[2][0].m[1][1] * P[(stride * 9) + 10]
-                            + Bt->blk[2][0].m[1][2] * P[(stride * 9) + 11]
-                            + Bt->blk[2][1].m[1][0] * P[(stride * 9) + 12]
-                            + Bt->blk[2][1].m[1][1] * P[(stride * 9) + 13]
-                            + Bt->blk[2][1].m[1][2] * P[(stride * 9) + 14];
-    const se23_real_t p8_9 = P[(stride * 8) + 9];
+    const se23_real_t t88 = t87 + Bt->blk[2][0].m[1][0] * P[144]
+                            + Bt->blk[2][0].m[1][1] * P[145] + Bt->blk[2][0].m[1][2] * P[146]
+                            + Bt->blk[2][1].m[1][0] * P[147] + Bt->blk[2][1].m[1][1] * P[148]
+                            + Bt->blk[2][1].m[1][2] * P[149];
+    const se23_real_t p8_9 = P[129];
     const se23_real_t t89 = p8_9 + dt * p5_9 + U->p.v[1] * p0_9 - U->p.v[0] * p1_9;
-    const se23_real_t t90 = t89 + Bt->blk[2][0].m[2][0] * P[(stride * 9) + 9]
-                            + Bt->blk[2][0].m[2][1] * P[(stride * 9) + 10]
-                            + Bt->blk[2][0].m[2][2] * P[(stride * 9) + 11]
-                            + Bt->blk[2][1].m[2][0] * P[(stride * 9) + 12]
-                            + Bt->blk[2][1].m[2][1] * P[(stride * 9) + 13]
-                            + Bt->blk[2][1].m[2][2] * P[(stride * 9) + 14];
+    const se23_real_t t90 = t89 + Bt->blk[2][0].m[2][0] * P[144]
+                            + Bt->blk[2][0].m[2][1] * P[145] + Bt->blk[2][0].m[2][2] * P[146]
+                            + Bt->blk[2][1].m[2][0] * P[147] + Bt->blk[2][1].m[2][1] * P[148]
+                            + Bt->blk[2][1].m[2][2] * P[149];
     const se23_real_t t91 = U->R.m[0][0] * t86 + U->R.m[1][0] * t88 + U->R.m[2][0] * t90;
-    const se23_real_t p6_10 = P[(stride * 6) + 10];
+    const se23_real_t p6_10 = P[100];
     const se23_real_t t92 = p6_10 + dt * p3_10 + U->p.v[2] * p1_10 - U->p.v[1] * p2_10;
-    out[(stride * 6) + 9] = t91;
-    out[(stride * 9) + 6] = t91;
-    const se23_real_t t93 = t92 + Bt->blk[2][0].m[0][0] * P[(stride * 9) + 10]
-                            + Bt->blk[2][0].m[0][1] * P[(stride * 10) + 10]
-                            + Bt->blk[2][0].m[0][2] * P[(stride * 10) + 11]
-                            + Bt->blk[2][1].m[0][0] * P[(stride * 10) + 12]
-                            + Bt->blk[2][1].m[0][1] * P[(stride * 10) + 13]
-                            + Bt->blk[2][1].m[0][2] * P[(stride * 10) + 14];
-    const se23_real_t p7_10 = P[(stride * 7) + 10];
+    out[99] = t91;
+    out[141] = t91;
+    const se23_real_t t93 = t92 + Bt->blk[2][0].m[0][0] * P[145]
+                            + Bt->blk[2][0].m[0][1] * P[160] + Bt->blk[2][0].m[0][2] * P[161]
+                            + Bt->blk[2][1].m[0][0] * P[162] + Bt->blk[2][1].m[0][1] * P[163]
+                            + Bt->blk[2][1].m[0][2] * P[164];
+    const se23_real_t p7_10 = P[115];
     const se23_real_t t94 = p7_10 + dt * p4_10 - U->p.v[2] * p0_10 + U->p.v[0] * p2_10;
-    const se23_real_t t95 = t94 + Bt->blk[2][0].m[1][0] * P[(stride * 9) + 10]
-                            + Bt->blk[2][0].m[1][1] * P[(stride * 10) + 10]
-                            + Bt->blk[2][0].m[1][2] * P[(stride * 10) + 11]
-                            + Bt->blk[2][1].m[1][0] * P[(stride * 10) + 12]
-                            + Bt->blk[2][1].m[1][1] * P[(stride * 10) + 13]
-                            + Bt->blk[2][1].m[1][2] * P[(stride * 10) + 14];
-    const se23_real_t p8_10 = P[(stride * 8) + 10];
+    const se23_real_t t95 = t94 + Bt->blk[2][0].m[1][0] * P[145]
+                            + Bt->blk[2][0].m[1][1] * P[160] + Bt->blk[2][0].m[1][2] * P[161]
+                            + Bt->blk[2][1].m[1][0] * P[162] + Bt->blk[2][1].m[1][1] * P[163]
+                            + Bt->blk[2][1].m[1][2] * P[164];
+    const se23_real_t p8_10 = P[130];
     const se23_real_t t96 = p8_10 + dt * p5_10 + U->p.v[1] * p0_10 - U->p.v[0] * p1_10;
-    const se23_real_t t97 = t96 + Bt->blk[2][0].m[2][0] * P[(stride * 9) + 10]
-                            + Bt->blk[2][0].m[2][1] * P[(stride * 10) + 10]
-                            + Bt->blk[2][0].m[2][2] * P[(stride * 10) + 11]
-                            + Bt->blk[2][1].m[2][0] * P[(stride * 10) + 12]
-                            + Bt->blk[2][1].m[2][1] * P[(stride * 10) + 13]
-                            + Bt->blk[2][1].m[2][2] * P[(stride * 10) + 14];
+    const se23_real_t t97 = t96 + Bt->blk[2][0].m[2][0] * P[145]
+                            + Bt->blk[2][0].m[2][1] * P[160] + Bt->blk[2][0].m[2][2] * P[161]
+                            + Bt->blk[2][1].m[2][0] * P[162] + Bt->blk[2][1].m[2][1] * P[163]
+                            + Bt->blk[2][1].m[2][2] * P[164];
     const se23_real_t t98 = U->R.m[0][0] * t93 + U->R.m[1][0] * t95 + U->R.m[2][0] * t97;
-    const se23_real_t p6_11 = P[(stride * 6) + 11];
+    const se23_real_t p6_11 = P[101];
     const se23_real_t t99 = p6_11 + dt * p3_11 + U->p.v[2] * p1_11 - U->p.v[1] * p2_11;
-    out[(stride * 6) + 10] = t98;
-    out[(stride * 10) + 6] = t98;
-    const se23_real_t t100 = t99 + Bt->blk[2][0].m[0][0] * P[(stride * 9) + 11]
-                             + Bt->blk[2][0].m[0][1] * P[(stride * 10) + 11]
-                             + Bt->blk[2][0].m[0][2] * P[(stride * 11) + 11]
-                             + Bt->blk[2][1].m[0][0] * P[(stride * 11) + 12]
-                             + Bt->blk[2][1].m[0][1] * P[(stride * 11) + 13]
-                             + Bt->blk[2][1].m[0][2] * P[(stride * 11) + 14];
-    const se23_real_t p7_11 = P[(stride * 7) + 11];
+    out[100] = t98;
+    out[156] = t98;
+    const se23_real_t t100 = t99 + Bt->blk[2][0].m[0][0] * P[146]
+                             + Bt->blk[2][0].m[0][1] * P[161] + Bt->blk[2][0].m[0][2] * P[176]
+                             + Bt->blk[2][1].m[0][0] * P[177] + Bt->blk[2][1].m[0][1] * P[178]
+                             + Bt->blk[2][1].m[0][2] * P[179];
+    const se23_real_t p7_11 = P[116];
     const se23_real_t t101 = p7_11 + dt * p4_11 - U->p.v[2] * p0_11 + U->p.v[0] * p2_11;
-    const se23_real_t t102 = t101 + Bt->blk[2][0].m[1][0] * P[(stride * 9) + 11]
-                             + Bt->blk[2][0].m[1][1] * P[(stride * 10) + 11]
-                             + Bt->blk[2][0].m[1][2] * P[(stride * 11) + 11]
-                             + Bt->blk[2][1].m[1][0] * P[(stride * 11) + 12]
-                             + Bt->blk[2][1].m[1][1] * P[(stride * 11) + 13]
-                             + Bt->blk[2][1].m[1][2] * P[(stride * 11) + 14];
-    const se23_real_t p8_11 = P[(stride * 8) + 11];
+    const se23_real_t t102 = t101 + Bt->blk[2][0].m[1][0] * P[146]
+                             + Bt->blk[2][0].m[1][1] * P[161] + Bt->blk[2][0].m[1][2] * P[176]
+                             + Bt->blk[2][1].m[1][0] * P[177] + Bt->blk[2][1].m[1][1] * P[178]
+                             + Bt->blk[2][1].m[1][2] * P[179];
+    const se23_real_t p8_11 = P[131];
     const se23_real_t t103 = p8_11 + dt * p5_11 + U->p.v[1] * p0_11 - U->p.v[0] * p1_11;
-    const se23_real_t t104 = t103 + Bt->blk[2][0].m[2][0] * P[(stride * 9) + 11]
-                             + Bt->blk[2][0].m[2][1] * P[(stride * 10) + 11]
-                             + Bt->blk[2][0].m[2][2] * P[(stride * 11) + 11]
-                             + Bt->blk[2][1].m[2][0] * P[(stride * 11) + 12]
-                             + Bt->blk[2][1].m[2][1] * P[(stride * 11) + 13]
-                             + Bt->blk[2][1].m[2][2] * P[(stride * 11) + 14];
+    const se23_real_t t104 = t103 + Bt->blk[2][0].m[2][0] * P[146]
+                             + Bt->blk[2][0].m[2][1] * P[161] + Bt->blk[2][0].m[2][2] * P[176]
+                             + Bt->blk[2][1].m[2][0] * P[177] + Bt->blk[2][1].m[2][1] * P[178]
+                             + Bt->blk[2][1].m[2][2] * P[179];
     const se23_real_t t105 = U->R.m[0][0] * t100 + U->R.m[1][0] * t102 + U->R.m[2][0] * t104;
     const se23_real_t t106 = U->R.m[0][1] * t86 + U->R.m[1][1] * t88 + U->R.m[2][1] * t90;
-    out[(stride * 6) + 11] = t105;
-    out[(stride * 11) + 6] = t105;
+    out[101] = t105;
+    out[171] = t105;
     const se23_real_t t107 = U->R.m[0][1] * t93 + U->R.m[1][1] * t95 + U->R.m[2][1] * t97;
-    out[(stride * 7) + 9] = t106;
-    out[(stride * 9) + 7] = t106;
+    out[114] = t106;
+    out[142] = t106;
     const se23_real_t t108 = U->R.m[0][1] * t100 + U->R.m[1][1] * t102 + U->R.m[2][1] * t104;
-    out[(stride * 7) + 10] = t107;
-    out[(stride * 10) + 7] = t107;
+    out[115] = t107;
+    out[157] = t107;
     const se23_real_t t109 = U->R.m[0][2] * t86 + U->R.m[1][2] * t88 + U->R.m[2][2] * t90;
-    out[(stride * 7) + 11] = t108;
-    out[(stride * 11) + 7] = t108;
+    out[116] = t108;
+    out[172] = t108;
     const se23_real_t t110 = U->R.m[0][2] * t93 + U->R.m[1][2] * t95 + U->R.m[2][2] * t97;
-    out[(stride * 8) + 9] = t109;
-    out[(stride * 9) + 8] = t109;
+    out[129] = t109;
+    out[143] = t109;
     const se23_real_t t111 = U->R.m[0][2] * t100 + U->R.m[1][2] * t102 + U->R.m[2][2] * t104;
-    out[(stride * 8) + 10] = t110;
-    out[(stride * 10) + 8] = t110;
-    out[(stride * 8) + 11] = t111;
-    out[(stride * 11) + 8] = t111;
+    out[130] = t110;
+    out[158] = t110;
+    out[131] = t111;
+    out[173] = t111;
     const se23_real_t t112 = t86 + q->qg * Bt->blk[2][0].m[0][0];
     const se23_real_t t113 = t93 + q->qg * Bt->blk[2][0].m[0][1];
     const se23_real_t t114 = t100 + q->qg * Bt->blk[2][0].m[0][2];
@@ -700,170 +655,143 @@ void se23_cov_step15_gyro(const se23_pose_t *U, se23_real_t dt, const se23_input
  * target has them); reads 42 entries of P, stores 54. */
 void se23_cov_step15_accel(const se23_pose_t *U, se23_real_t dt, const se23_input_blocks_t *Bt,
                            const se23_step_noise_t *q, const se23_real_t *P, se23_real_t *out,
-                           int stride, se23_cov_pose_t *S)
+                           se23_cov_pose_t *S)
 {
     const se23_real_t p0_12 = P[12];
-    const se23_real_t t1 = p0_12 + Bt->blk[0][0].m[0][0] * P[(stride * 9) + 12]
-                           + Bt->blk[0][0].m[0][1] * P[(stride * 10) + 12]
-                           + Bt->blk[0][0].m[0][2] * P[(stride * 11) + 12];
-    const se23_real_t p1_12 = P[stride + 12];
-    const se23_real_t t2 = p1_12 + Bt->blk[0][0].m[1][0] * P[(stride * 9) + 12]
-                           + Bt->blk[0][0].m[1][1] * P[(stride * 10) + 12]
-                           + Bt->blk[0][0].m[1][2] * P[(stride * 11) + 12];
-    const se23_real_t p2_12 = P[(stride * 2) + 12];
-    const se23_real_t t3 = p2_12 + Bt->blk[0][0].m[2][0] * P[(stride * 9) + 12]
-                           + Bt->blk[0][0].m[2][1] * P[(stride * 10) + 12]
-                           + Bt->blk[0][0].m[2][2] * P[(stride * 11) + 12];
+    const se23_real_t t1 = p0_12 + Bt->blk[0][0].m[0][0] * P[147]
+                           + Bt->blk[0][0].m[0][1] * P[162] + Bt->blk[0][0].m[0][2] * P[177];
+    const se23_real_t p1_12 = P[27];
+    const se23_real_t t2 = p1_12 + Bt->blk[0][0].m[1][0] * P[147]
+                           + Bt->blk[0][0].m[1][1] * P[162] + Bt->blk[0][0].m[1][2] * P[177];
+    const se23_real_t p2_12 = P[42];
+    const se23_real_t t3 = p2_12 + Bt->blk[0][0].m[2][0] * P[147]
+                           + Bt->blk[0][0].m[2][1] * P[162] + Bt->blk[0][0].m[2][2] * P[177];
     const se23_real_t t4 = U->R.m[0][0] * t1 + U->R.m[1][0] * t2 + U->R.m[2][0] * t3;
     const se23_real_t p0_13 = P[13];
-    const se23_real_t t5 = p0_13 + Bt->blk[0][0].m[0][0] * P[(stride * 9) + 13]
-                           + Bt->blk[0][0].m[0][1] * P[(stride * 10) + 13]
-                           + Bt->blk[0][0].m[0][2] * P[(stride * 11) + 13];
+    const se23_real_t t5 = p0_13 + Bt->blk[0][0].m[0][0] * P[148]
+                           + Bt->blk[0][0].m[0][1] * P[163] + Bt->blk[0][0].m[0][2] * P[178];
     out[12] = t4;
-    out[(stride * 12)] = t4;
-    const se23_real_t p1_13 = P[stride + 13];
-    const se23_real_t t6 = p1_13 + Bt->blk[0][0].m[1][0] * P[(stride * 9) + 13]
-                           + Bt->blk[0][0].m[1][1] * P[(stride * 10) + 13]
-                           + Bt->blk[0][0].m[1][2] * P[(stride * 11) + 13];
-    const se23_real_t p2_13 = P[(stride * 2) + 13];
-    const se23_real_t t7 = p2_13 + Bt->blk[0][0].m[2][0] * P[(stride * 9) + 13]
-                           + Bt->blk[0][0].m[2][1] * P[(stride * 10) + 13]
-                           + Bt->blk[0][0].m[2][2] * P[(stride * 11) + 13];
+    out[180] = t4;
+    const se23_real_t p1_13 = P[28];
+    const se23_real_t t6 = p1_13 + Bt->blk[0][0].m[1][0] * P[148]
+                           + Bt->blk[0][0].m[1][1] * P[163] + Bt->blk[0][0].m[1][2] * P[178];
+    const se23_real_t p2_13 = P[43];
+    const se23_real_t t7 = p2_13 + Bt->blk[0][0].m[2][0] * P[148]
+                           + Bt->blk[0][0].m[2][1] * P[163] + Bt->blk[0][0].m[2][2] * P[178];
     const se23_real_t t8 = U->R.m[0][0] * t5 + U->R.m[1][0] * t6 + U->R.m[2][0] * t7;
     const se23_real_t p0_14 = P[14];
-    const se23_real_t t9 = p0_14 + Bt->blk[0][0].m[0][0] * P[(stride * 9) + 14]
-                           + Bt->blk[0][0].m[0][1] * P[(stride * 10) + 14]
-                           + Bt->blk[0][0].m[0][2] * P[(stride * 11) + 14];
+    const se23_real_t t9 = p0_14 + Bt->blk[0][0].m[0][0] * P[149]
+                           + Bt->blk[0][0].m[0][1] * P[164] + Bt->blk[0][0].m[0][2] * P[179];
     out[13] = t8;
-    out[(stride * 13)] = t8;
-    const se23_real_t p1_14 = P[stride + 14];
-    const se23_real_t t10 = p1_14 + Bt->blk[0][0].m[1][0] * P[(stride * 9) + 14]
-                            + Bt->blk[0][0].m[1][1] * P[(stride * 10) + 14]
-                            + Bt->blk[0][0].m[1][2] * P[(stride * 11) + 14];
-    const se23_real_t p2_14 = P[(stride * 2) + 14];
-    const se23_real_t t11 = p2_14 + Bt->blk[0][0].m[2][0] * P[(stride * 9) + 14]
-                            + Bt->blk[0][0].m[2][1] * P[(stride * 10) + 14]
-                            + Bt->blk[0][0].m[2][2] * P[(stride * 11) + 14];
+    out[195] = t8;
+    const se23_real_t p1_14 = P[29];
+    const se23_real_t t10 = p1_14 + Bt->blk[0][0].m[1][0] * P[149]
+                            + Bt->blk[0][0].m[1][1] * P[164] + Bt->blk[0][0].m[1][2] * P[179];
+    const se23_real_t p2_14 = P[44];
+    const se23_real_t t11 = p2_14 + Bt->blk[0][0].m[2][0] * P[149]
+                            + Bt->blk[0][0].m[2][1] * P[164] + Bt->blk[0][0].m[2][2] * P[179];
     const se23_real_t t12 = U->R.m[0][0] * t9 + U->R.m[1][0] * t10 + U->R.m[2][0] * t11;
     const se23_real_t t13 = U->R.m[0][1] * t1 + U->R.m[1][1] * t2 + U->R.m[2][1] * t3;
     out[14] = t12;
-    out[(stride * 14)] = t12;
+    out[210] = t12;
     const se23_real_t t14 = U->R.m[0][1] * t5 + U->R.m[1][1] * t6 + U->R.m[2][1] * t7;
-    out[stride + 12] = t13;
-    out[(stride * 12) + 1] = t13;
+    out[27] = t13;
+    out[181] = t13;
     const se23_real_t t15 = U->R.m[0][1] * t9 + U->R.m[1][1] * t10 + U->R.m[2][1] * t11;
-    out[stride + 13] = t14;
-    out[(stride * 13) + 1] = t14;
+    out[28] = t14;
+    out[196] = t14;
     const se23_real_t t16 = U->R.m[0][2] * t1 + U->R.m[1][2] * t2 + U->R.m[2][2] * t3;
-    out[stride + 14] = t15;
-    out[(stride * 14) + 1] = t15;
+    out[29] = t15;
+    out[211] = t15;
     const se23_real_t t17 = U->R.m[0][2] * t5 + U->R.m[1][2] * t6 + U->R.m[2][2] * t7;
-    out[(stride * 2) + 12] = t16;
-    out[(stride * 12) + 2] = t16;
+    out[42] = t16;
+    out[182] = t16;
     const se23_real_t t18 = U->R.m[0][2] * t9 + U->R.m[1][2] * t10 + U->R.m[2][2] * t11;
-    out[(stride * 2) + 13] = t17;
-    out[(stride * 13) + 2] = t17;
-    out[(stride * 2) + 14] = t18;
-    out[(stride * 14) + 2] = t18;
-    const se23_real_t p3_12 = P[(stride * 3) + 12];
+    out[43] = t17;
+    out[197] = t17;
+    out[44] = t18;
+    out[212] = t18;
+    const se23_real_t p3_12 = P[57];
     const se23_real_t t19 = p3_12 + U->v.v[2] * p1_12 - U->v.v[1] * p2_12;
-    const se23_real_t t20 = t19 + Bt->blk[1][0].m[0][0] * P[(stride * 9) + 12]
-                            + Bt->blk[1][0].m[0][1] * P[(stride * 10) + 12]
-                            + Bt->blk[1][0].m[0][2] * P[(stride * 11) + 12]
-                            + Bt->blk[1][1].m[0][0] * P[(stride * 12) + 12]
-                            + Bt->blk[1][1].m[0][1] * P[(stride * 12) + 13]
-                            + Bt->blk[1][1].m[0][2] * P[(stride * 12) + 14];
-    const se23_real_t p4_12 = P[(stride * 4) + 12];
+    const se23_real_t t20 = t19 + Bt->blk[1][0].m[0][0] * P[147]
+                            + Bt->blk[1][0].m[0][1] * P[162] + Bt->blk[1][0].m[0][2] * P[177]
+                            + Bt->blk[1][1].m[0][0] * P[192] + Bt->blk[1][1].m[0][1] * P[193]
+                            + Bt->blk[1][1].m[0][2] * P[194];
+    const se23_real_t p4_12 = P[72];
     const se23_real_t t21 = p4_12 - U->v.v[2] * p0_12 + U->v.v[0] * p2_12;
-    const se23_real_t t22 = t21 + Bt->blk[1][0].m[1][0] * P[(stride * 9) + 12]
-                            + Bt->blk[1][0].m[1][1] * P[(stride * 10) + 12]
-                            + Bt->blk[1][0].m[1][2] * P[(stride * 11) + 12]
-                            + Bt->blk[1][1].m[1][0] * P[(stride * 12) + 12]
-                            + Bt->blk[1][1].m[1][1] * P[(stride * 12) + 13]
-                            + Bt->blk[1][1].m[1][2] * P[(stride * 12) + 14];
-    const se23_real_t p5_12 = P[(stride * 5) + 12];
+    const se23_real_t t22 = t21 + Bt->blk[1][0].m[1][0] * P[147]
+                            + Bt->blk[1][0].m[1][1] * P[162] + Bt->blk[1][0].m[1][2] * P[177]
+                            + Bt->blk[1][1].m[1][0] * P[192] + Bt->blk[1][1].m[1][1] * P[193]
+                            + Bt->blk[1][1].m[1][2] * P[194];
+    const se23_real_t p5_12 = P[87];
     const se23_real_t t23 = p5_12 + U->v.v[1] * p0_12 - U->v.v[0] * p1_12;
-    const se23_real_t t24 = t23 + Bt->blk[1][0].m[2][0] * P[(stride * 9) + 12]
-                            + Bt->blk[1][0].m[2][1] * P[(stride * 10) + 12]
-                            + Bt->blk[1][0].m[2][2] * P[(stride * 11) + 12]
-                            + Bt->blk[1][1].m[2][0] * P[(stride * 12) + 12]
-                            + Bt->blk[1][1].m[2][1] * P[(stride * 12) + 13]
-                            + Bt->blk[1][1].m[2][2] * P[(stride * 12) + 14];
+    const se23_real_t t24 = t23 + Bt->blk[1][0].m[2][0] * P[147]
+                            + Bt->blk[1][0].m[2][1] * P[162] + Bt->blk[1][0].m[2][2] * P[177]
+                            + Bt->blk[1][1].m[2][0] * P[192] + Bt->blk[1][1].m[2][1] * P[193]
+                            + Bt->blk[1][1].m[2][2] * P[194];
     const se23_real_t t25 = U->R.m[0][0] * t20 + U->R.m[1][0] * t22 + U->R.m[2][0] * t24;
-    const se23_real_t p3_13 = P[(stride * 3) + 13];
+    const se23_real_t p3_13 = P[58];
     const se23_real_t t26 = p3_13 + U->v.v[2] * p1_13 - U->v.v[1] * p2_13;
-    out[(stride * 3) + 12] = t25;
-    out[(stride * 12) + 3] = t25;
-    const se23_real_t t27 = t26 + Bt->blk[1][0].m[0][0] * P[(stride * 9) + 13]
-                            + Bt->blk[1][0].m[0][1] * P[(stride * 10) + 13]
-                            + Bt->blk[1][0].m[0][2] * P[(stride * 11) + 13]
-                            + Bt->blk[1][1].m[0][0] * P[(stride * 12) + 13]
-                            + Bt->blk[1][1].m[0][1] * P[(stride * 13) + 13]
-                            + Bt->blk[1][1].m[0][2] * P[(stride * 13) + 14];
-    const se23_real_t p4_13 = P[(stride * 4) + 13];
+    out[57] = t25;
+    out[183] = t25;
+    const se23_real_t t27 = t26 + Bt->blk[1][0].m[0][0] * P[148]
+                            + Bt->blk[1][0].m[0][1] * P[163] + Bt->blk[1][0].m[0][2] * P[178]
+                            + Bt->blk[1][1].m[0][0] * P[193] + Bt->blk[1][1].m[0][1] * P[208]
+                            + Bt->blk[1][1].m[0][2] * P[209];
+    const se23_real_t p4_13 = P[73];
     const se23_real_t t28 = p4_13 - U->v.v[2] * p0_13 + U->v.v[0] * p2_13;
-    const se23_real_t t29 = t28 + Bt->blk[1][0].m[1][0] * P[(stride * 9) + 13]
-                            + Bt->blk[1][0].m[1][1] * P[(stride * 10) + 13]
-                            + Bt->blk[1][0].m[1][2] * P[(stride * 11) + 13]
-                            + Bt->blk[1][1].m[1][0] * P[(stride * 12) + 13]
-                            + Bt->blk[1][1].m[1][1] * P[(stride * 13) + 13]
-                            + Bt->blk[1][1].m[1][2] * P[(stride * 13) + 14];
-    const se23_real_t p5_13 = P[(stride * 5) + 13];
+    const se23_real_t t29 = t28 + Bt->blk[1][0].m[1][0] * P[148]
+                            + Bt->blk[1][0].m[1][1] * P[163] + Bt->blk[1][0].m[1][2] * P[178]
+                            + Bt->blk[1][1].m[1][0] * P[193] + Bt->blk[1][1].m[1][1] * P[208]
+                            + Bt->blk[1][1].m[1][2] * P[209];
+    const se23_real_t p5_13 = P[88];
     const se23_real_t t30 = p5_13 + U->v.v[1] * p0_13 - U->v.v[0] * p1_13;
-    const se23_real_t t31 = t30 + Bt->blk[1][0].m[2][0] * P[(stride * 9) + 13]
-                            + Bt->blk[1][0].m[2][1] * P[(stride * 10) + 13]
-                            + Bt->blk[1][0].m[2][2] * P[(stride * 11) + 13]
-                            + Bt->blk[1][1].m[2][0] * P[(stride * 12) + 13]
-                            + Bt->blk[1][1].m[2][1] * P[(stride * 13) + 13]
-                            + Bt->blk[1][1].m[2][2] * P[(stride * 13) + 14];
+    const se23_real_t t31 = t30 + Bt->blk[1][0].m[2][0] * P[148]
+                            + Bt->blk[1][0].m[2][1] * P[163] + Bt->blk[1][0].m[2][2] * P[178]
+                            + Bt->blk[1][1].m[2][0] * P[193] + Bt->blk[1][1].m[2][1] * P[208]
+                            + Bt->blk[1][1].m[2][2] * P[209];
     const se23_real_t t32 = U->R.m[0][0] * t27 + U->R.m[1][0] * t29 + U->R.m[2][0] * t31;
-    const se23_real_t p3_14 = P[(stride * 3) + 14];
+    const se23_real_t p3_14 = P[59];
     const se23_real_t t33 = p3_14 + U->v.v[2] * p1_14 - U->v.v[1] * p2_14;
-    out[(stride * 3) + 13] = t32;
-    out[(stride * 13) + 3] = t32;
-    const se23_real_t t34 = t33 + Bt->blk[1][0].m[0][0] * P[(stride * 9) + 14]
-                            + Bt->blk[1][0].m[0][1] * P[(stride * 10) + 14]
-                            + Bt->blk[1][0].m[0][2] * P[(stride * 11) + 14]
-                            + Bt->blk[1][1].m[0][0] * P[(stride * 12) + 14]
-                            + Bt->blk[1][1].m[0][1] * P[(stride * 13) + 14]
-                            + Bt->blk[1][1].m[0][2] * P[(stride * 14) + 14];
-    const se23_real_t p4_14 = P[(stride * 4) + 14];
+    out[58] = t32;
+    out[198] = t32;
+    const se23_real_t t34 = t33 + Bt->blk[1][0].m[0][0] * P[149]
+                            + Bt->blk[1][0].m[0][1] * P[164] + Bt->blk[1][0].m[0][2] * P[179]
+                            + Bt->blk[1][1].m[0][0] * P[194] + Bt->blk[1][1].m[0][1] * P[209]
+                            + Bt->blk[1][1].m[0][2] * P[224];
+    const se23_real_t p4_14 = P[74];
     const se23_real_t t35 = p4_14 - U->v.v[2] * p0_14 + U->v.v[0] * p2_14;
-    const se23_real_t t36 = t35 + Bt->blk[1][0].m[1][0] * P[(stride * 9) + 14]
-                            + Bt->blk[1][0].m[1][1] * P[(stride * 10) + 14]
-                            + Bt->blk[1][0].m[1][2] * P[(stride * 11) + 14]
-                            + Bt->blk[1][1].m[1][0] * P[(stride * 12) + 14]
-                            + Bt->blk[1][1].m[1][1] * P[(stride * 13) + 14]
-                            + Bt->blk[1][1].m[1][2] * P[(stride * 14) + 14];
-    const se23_real_t p5_14 = P[(stride * 5) + 14];
+    const se23_real_t t36 = t35 + Bt->blk[1][0].m[1][0] * P[149]
+                            + Bt->blk[1][0].m[1][1] * P[164] + Bt->blk[1][0].m[1][2] * P[179]
+                            + Bt->blk[1][1].m[1][0] * P[194] + Bt->blk[1][1].m[1][1] * P[209]
+                            + Bt->blk[1][1].m[1][2] * P[224];
+    const se23_real_t p5_14 = P[89];
     const se23_real_t t37 = p5_14 + U->v.v[1] * p0_14 - U->v.v[0] * p1_14;
-    const se23_real_t t38 = t37 + Bt->blk[1][0].m[2][0] * P[(stride * 9) + 14]
-                            + Bt->blk[1][0].m[2][1] * P[(stride * 10) + 14]
-                            + Bt->blk[1][0].m[2][2] * P[(stride * 11) + 14]
-                            + Bt->blk[1][1].m[2][0] * P[(stride * 12) + 14]
-                            + Bt->blk[1][1].m[2][1] * P[(stride * 13) + 14]
-                            + Bt->blk[1][1].m[2][2] * P[(stride * 14) + 14];
+    const se23_real_t t38 = t37 + Bt->blk[1][0].m[2][0] * P[149]
+                            + Bt->blk[1][0].m[2][1] * P[164] + Bt->blk[1][0].m[2][2] * P[179]
+                            + Bt->blk[1][1].m[2][0] * P[194] + Bt->blk[1][1].m[2][1] * P[209]
+                            + Bt->blk[1][1].m[2][2] * P[224];
     const se23_real_t t39 = U->R.m[0][0] * t34 + U->R.m[1][0] * t36 + U->R.m[2][0] * t38;
     const se23_real_t t40 = U->R.m[0][1] * t20 + U->R.m[1][1] * t22 + U->R.m[2][1] * t24;
-    out[(stride * 3) + 14] = t39;
-    out[(stride * 14) + 3] = t39;
+    out[59] = t39;
+    out[213] = t39;
     const se23_real_t t41 = U->R.m[0][1] * t27 + U->R.m[1][1] * t29 + U->R.m[2][1] * t31;
-    out[(stride * 4) + 12] = t40;
-    out[(stride * 12) + 4] = t40;
+    out[72] = t40;
+    out[184] = t40;
     const se23_real_t t42 = U->R.m[0][1] * t34 + U->R.m[1][1] * t36 + U->R.m[2][1] * t38;
-    out[(stride * 4) + 13] = t41;
-    out[(stride * 13) + 4] = t41;
+    out[73] = t41;
+    out[199] = t41;
     const se23_real_t t43 = U->R.m[0][2] * t20 + U->R.m[1][2] * t22 + U->R.m[2][2] * t24;
-    out[(stride * 4) + 14] = t42;
-    out[(stride * 14) + 4] = t42;
+    out[74] = t42;
+    out[214] = t42;
     const se23_real_t t44 = U->R.m[0][2] * t27 + U->R.m[1][2] * t29 + U->R.m[2][2] * t31;
-    out[(stride * 5) + 12] = t43;
-    out[(stride * 12) + 5] = t43;
+    out[87] = t43;
+    out[185] = t43;
     const se23_real_t t45 = U->R.m[0][2] * t34 + U->R.m[1][2] * t36 + U->R.m[2][2] * t38;
-    out[(stride * 5) + 13] = t44;
-    out[(stride * 13) + 5] = t44;
-    out[(stride * 5) + 14] = t45;
-    out[(stride * 14) + 5] = t45;
+    out[88] = t44;
+    out[200] = t44;
+    out[89] = t45;
+    out[215] = t45;
     const se23_real_t t46 = S->e[6] + p0_12 * Bt->blk[1][1].m[0][0]
                             + p0_13 * Bt->blk[1][1].m[0][1] + p0_14 * Bt->blk[1][1].m[0][2];
     S->e[6] = t46;
@@ -924,105 +852,87 @@ void se23_cov_step15_accel(const se23_pose_t *U, se23_real_t dt, const se23_inpu
                             + Bt->blk[1][1].m[2][2] * t65 + t23 * Bt->blk[1][1].m[2][0]
                             + t30 * Bt->blk[1][1].m[2][1] + t37 * Bt->blk[1][1].m[2][2];
     S->e[29] = t69;
-    const se23_real_t p6_12 = P[(stride * 6) + 12];
+    const se23_real_t p6_12 = P[102];
     const se23_real_t t70 = p6_12 + dt * p3_12 + U->p.v[2] * p1_12 - U->p.v[1] * p2_12;
-    const se23_real_t t71 = t70 + Bt->blk[2][0].m[0][0] * P[(stride * 9) + 12]
-                            + Bt->blk[2][0].m[0][1] * P[(stride * 10) + 12]
-                            + Bt->blk[2][0].m[0][2] * P[(stride * 11) + 12]
-                            + Bt->blk[2][1].m[0][0] * P[(stride * 12) + 12]
-                            + Bt->blk[2][1].m[0][1] * P[(stride * 12) + 13]
-                            + Bt->blk[2][1].m[0][2] * P[(stride * 12) + 14];
-    const se23_real_t p7_12 = P[(stride * 7) + 12];
+    const se23_real_t t71 = t70 + Bt->blk[2][0].m[0][0] * P[147]
+                            + Bt->blk[2][0].m[0][1] * P[162] + Bt->blk[2][0].m[0][2] * P[177]
+                            + Bt->blk[2][1].m[0][0] * P[192] + Bt->blk[2][1].m[0][1] * P[193]
+                            + Bt->blk[2][1].m[0][2] * P[194];
+    const se23_real_t p7_12 = P[117];
     const se23_real_t t72 = p7_12 + dt * p4_12 - U->p.v[2] * p0_12 + U->p.v[0] * p2_12;
-    const se23_real_t t73 = t72 + Bt->blk[2][0].m[1][0] * P[(stride * 9) + 12]
-                            + Bt->blk[2][0].m[1][1] * P[(stride * 10) + 12]
-                            + Bt->blk[2][0].m[1][2] * P[(stride * 11) + 12]
-                            + Bt->blk[2][1].m[1][0] * P[(stride * 12) + 12]
-                            + Bt->blk[2][1].m[1][1] * P[(stride * 12) + 13]
-                            + Bt->blk[2][1].m[1][2] * P[(stride * 12) + 14];
-    const se23_real_t p8_12 = P[(stride * 8) + 12];
+    const se23_real_t t73 = t72 + Bt->blk[2][0].m[1][0] * P[147]
+                            + Bt->blk[2][0].m[1][1] * P[162] + Bt->blk[2][0].m[1][2] * P[177]
+                            + Bt->blk[2][1].m[1][0] * P[192] + Bt->blk[2][1].m[1][1] * P[193]
+                            + Bt->blk[2][1].m[1][2] * P[194];
+    const se23_real_t p8_12 = P[132];
     const se23_real_t t74 = p8_12 + dt * p5_12 + U->p.v[1] * p0_12 - U->p.v[0] * p1_12;
-    const se23_real_t t75 = t74 + Bt->blk[2][0].m[2][0] * P[(stride * 9) + 12]
-                            + Bt->blk[2][0].m[2][1] * P[(stride * 10) + 12]
-                            + Bt->blk[2][0].m[2][2] * P[(stride * 11) + 12]
-                            + Bt->blk[2][1].m[2][0] * P[(stride * 12) + 12]
-                            + Bt->blk[2][1].m[2][1] * P[(stride * 12) + 13]
-                            + Bt->blk[2][1].m[2][2] * P[(stride * 12) + 14];
+    const se23_real_t t75 = t74 + Bt->blk[2][0].m[2][0] * P[147]
+                            + Bt->blk[2][0].m[2][1] * P[162] + Bt->blk[2][0].m[2][2] * P[177]
+                            + Bt->blk[2][1].m[2][0] * P[192] + Bt->blk[2][1].m[2][1] * P[193]
+                            + Bt->blk[2][1].m[2][2] * P[194];
     const se23_real_t t76 = U->R.m[0][0] * t71 + U->R.m[1][0] * t73 + U->R.m[2][0] * t75;
-    const se23_real_t p6_13 = P[(stride * 6) + 13];
+    const se23_real_t p6_13 = P[103];
     const se23_real_t t77 = p6_13 + dt * p3_13 + U->p.v[2] * p1_13 - U->p.v[1] * p2_13;
-    out[(stride * 6) + 12] = t76;
-    out[(stride * 12) + 6] = t76;
-    const se23_real_t t78 = t77 + Bt->blk[2][0].m[0][0] * P[(stride * 9) + 13]
-                            + Bt->blk[2][0].m[0][1] * P[(stride * 10) + 13]
-                            + Bt->blk[2][0].m[0][2] * P[(stride * 11) + 13]
-                            + Bt->blk[2][1].m[0][0] * P[(stride * 12) + 13]
-                            + Bt->blk[2][1].m[0][1] * P[(stride * 13) + 13]
-                            + Bt->blk[2][1].m[0][2] * P[(stride * 13) + 14];
-    const se23_real_t p7_13 = P[(stride * 7) + 13];
+    out[102] = t76;
+    out[186] = t76;
+    const se23_real_t t78 = t77 + Bt->blk[2][0].m[0][0] * P[148]
+                            + Bt->blk[2][0].m[0][1] * P[163] + Bt->blk[2][0].m[0][2] * P[178]
+                            + Bt->blk[2][1].m[0][0] * P[193] + Bt->blk[2][1].m[0][1] * P[208]
+                            + Bt->blk[2][1].m[0][2] * P[209];
+    const se23_real_t p7_13 = P[118];
     const se23_real_t t79 = p7_13 + dt * p4_13 - U->p.v[2] * p0_13 + U->p.v[0] * p2_13;
-    const se23_real_t t80 = t79 + Bt->blk[2][0].m[1][0] * P[(stride * 9) + 13]
-                            + Bt->blk[2][0].m[1][1] * P[(stride * 10) + 13]
-                            + Bt->blk[2][0].m[1][2] * P[(stride * 11) + 13]
-                            + Bt->blk[2][1].m[1][0] * P[(stride * 12) + 13]
-                            + Bt->blk[2][1].m[1][1] * P[(stride * 13) + 13]
-                            + Bt->blk[2][1].m[1][2] * P[(stride * 13) + 14];
-    const se23_real_t p8_13 = P[(stride * 8) + 13];
+    const se23_real_t t80 = t79 + Bt->blk[2][0].m[1][0] * P[148]
+                            + Bt->blk[2][0].m[1][1] * P[163] + Bt->blk[2][0].m[1][2] * P[178]
+                            + Bt->blk[2][1].m[1][0] * P[193] + Bt->blk[2][1].m[1][1] * P[208]
+                            + Bt->blk[2][1].m[1][2] * P[209];
+    const se23_real_t p8_13 = P[133];
     const se23_real_t t81 = p8_13 + dt * p5_13 + U->p.v[1] * p0_13 - U->p.v[0] * p1_13;
-    const se23_real_t t82 = t81 + Bt->blk[2][0].m[2][0] * P[(stride * 9) + 13]
-                            + Bt->blk[2][0].m[2][1] * P[(stride * 10) + 13]
-                            + Bt->blk[2][0].m[2][2] * P[(stride * 11) + 13]
-                            + Bt->blk[2][1].m[2][0] * P[(stride * 12) + 13]
-                            + Bt->blk[2][1].m[2][1] * P[(stride * 13) + 13]
-                            + Bt->blk[2][1].m[2][2] * P[(stride * 13) + 14];
+    const se23_real_t t82 = t81 + Bt->blk[2][0].m[2][0] * P[148]
+                            + Bt->blk[2][0].m[2][1] * P[163] + Bt->blk[2][0].m[2][2] * P[178]
+                            + Bt->blk[2][1].m[2][0] * P[193] + Bt->blk[2][1].m[2][1] * P[208]
+                            + Bt->blk[2][1].m[2][2] * P[209];
     const se23_real_t t83 = U->R.m[0][0] * t78 + U->R.m[1][0] * t80 + U->R.m[2][0] * t82;
-    const se23_real_t p6_14 = P[(stride * 6) + 14];
+    const se23_real_t p6_14 = P[104];
     const se23_real_t t84 = p6_14 + dt * p3_14 + U->p.v[2] * p1_14 - U->p.v[1] * p2_14;
-    out[(stride * 6) + 13] = t83;
-    out[(stride * 13) + 6] = t83;
-    const se23_real_t t85 = t84 + Bt->blk[2][0].m[0][0] * P[(stride * 9) + 14]
-                            + Bt->blk[2][0].m[0][1] * P[(stride * 10) + 14]
-                            + Bt->blk[2][0].m[0][2] * P[(stride * 11) + 14]
-                            + Bt->blk[2][1].m[0][0] * P[(stride * 12) + 14]
-                            + Bt->blk[2][1].m[0][1] * P[(stride * 13) + 14]
-                            + Bt->blk[2][1].m[0][2] * P[(stride * 14) + 14];
-    const se23_real_t p7_14 = P[(stride * 7) + 14];
+    out[103] = t83;
+    out[201] = t83;
+    const se23_real_t t85 = t84 + Bt->blk[2][0].m[0][0] * P[149]
+                            + Bt->blk[2][0].m[0][1] * P[164] + Bt->blk[2][0].m[0][2] * P[179]
+                            + Bt->blk[2][1].m[0][0] * P[194] + Bt->blk[2][1].m[0][1] * P[209]
+                            + Bt->blk[2][1].m[0][2] * P[224];
+    const se23_real_t p7_14 = P[119];
     const se23_real_t t86 = p7_14 + dt * p4_14 - U->p.v[2] * p0_14 + U->p.v[0] * p2_14;
-    const se23_real_t t87 = t86 + Bt->blk[2][0].m[1][0] * P[(stride * 9) + 14]
-                            + Bt->blk[2][0].m[1][1] * P[(stride * 10) + 14]
-                            + Bt->blk[2][0].m[1][2] * P[(stride * 11) + 14]
-                            + Bt->blk[2][1].m[1][0] * P[(stride * 12) + 14]
-                            + Bt->blk[2][1].m[1][1] * P[(stride * 13) + 14]
-                            + Bt->blk[2][1].m[1][2] * P[(stride * 14) + 14];
-    const se23_real_t p8_14 = P[(stride * 8) + 14];
+    const se23_real_t t87 = t86 + Bt->blk[2][0].m[1][0] * P[149]
+                            + Bt->blk[2][0].m[1][1] * P[164] + Bt->blk[2][0].m[1][2] * P[179]
+                            + Bt->blk[2][1].m[1][0] * P[194] + Bt->blk[2][1].m[1][1] * P[209]
+                            + Bt->blk[2][1].m[1][2] * P[224];
+    const se23_real_t p8_14 = P[134];
     const se23_real_t t88 = p8_14 + dt * p5_14 + U->p.v[1] * p0_14 - U->p.v[0] * p1_14;
-    const se23_real_t t89 = t88 + Bt->blk[2][0].m[2][0] * P[(stride * 9) + 14]
-                            + Bt->blk[2][0].m[2][1] * P[(stride * 10) + 14]
-                            + Bt->blk[2][0].m[2][2] * P[(stride * 11) + 14]
-                            + Bt->blk[2][1].m[2][0] * P[(stride * 12) + 14]
-                            + Bt->blk[2][1].m[2][1] * P[(stride * 13) + 14]
-                            + Bt->blk[2][1].m[2][2] * P[(stride * 14) + 14];
+    const se23_real_t t89 = t88 + Bt->blk[2][0].m[2][0] * P[149]
+                            + Bt->blk[2][0].m[2][1] * P[164] + Bt->blk[2][0].m[2][2] * P[179]
+                            + Bt->blk[2][1].m[2][0] * P[194] + Bt->blk[2][1].m[2][1] * P[209]
+                            + Bt->blk[2][1].m[2][2] * P[224];
     const se23_real_t t90 = U->R.m[0][0] * t85 + U->R.m[1][0] * t87 + U->R.m[2][0] * t89;
     const se23_real_t t91 = U->R.m[0][1] * t71 + U->R.m[1][1] * t73 + U->R.m[2][1] * t75;
-    out[(stride * 6) + 14] = t90;
-    out[(stride * 14) + 6] = t90;
+    out[104] = t90;
+    out[216] = t90;
     const se23_real_t t92 = U->R.m[0][1] * t78 + U->R.m[1][1] * t80 + U->R.m[2][1] * t82;
-    out[(stride * 7) + 12] = t91;
-    out[(stride * 12) + 7] = t91;
+    out[117] = t91;
+    out[187] = t91;
     const se23_real_t t93 = U->R.m[0][1] * t85 + U->R.m[1][1] * t87 + U->R.m[2][1] * t89;
-    out[(stride * 7) + 13] = t92;
-    out[(stride * 13) + 7] = t92;
+    out[118] = t92;
+    out[202] = t92;
     const se23_real_t t94 = U->R.m[0][2] * t71 + U->R.m[1][2] * t73 + U->R.m[2][2] * t75;
-    out[(stride * 7) + 14] = t93;
-    out[(stride * 14) + 7] = t93;
+    out[119] = t93;
+    out[217] = t93;
     const se23_real_t t95 = U->R.m[0][2] * t78 + U->R.m[1][2] * t80 + U->R.m[2][2] * t82;
-    out[(stride * 8) + 12] = t94;
-    out[(stride * 12) + 8] = t94;
+    out[132] = t94;
+    out[188] = t94;
     const se23_real_t t96 = U->R.m[0][2] * t85 + U->R.m[1][2] * t87 + U->R.m[2][2] * t89;
-    out[(stride * 8) + 13] = t95;
-    out[(stride * 13) + 8] = t95;
-    out[(stride * 8) + 14] = t96;
-    out[(stride * 14) + 8] = t96;
+    out[133] = t95;
+    out[203] = t95;
+    out[134] = t96;
+    out[218] = t96;
     const se23_real_t t97 = S->e[15] + p0_12 * Bt->blk[2][1].m[0][0]
                             + p0_13 * Bt->blk[2][1].m[0][1] + p0_14 * Bt->blk[2][1].m[0][2];
     S->e[15] = t97;
@@ -1139,74 +1049,73 @@ void se23_cov_step15_accel(const se23_pose_t *U, se23_real_t dt, const se23_inpu
 /* 15 states, third stage: the bias block: 0 multiplies and 6 adds (fused
  * into multiply-adds where the target has them); reads 21 entries of P,
  * stores 36. */
-void se23_cov_step15_bias(const se23_step_noise_t *q, const se23_real_t *P, se23_real_t *out,
-                          int stride)
+void se23_cov_step15_bias(const se23_step_noise_t *q, const se23_real_t *P, se23_real_t *out)
 {
-    const se23_real_t p9_9 = P[(stride * 9) + 9];
+    const se23_real_t p9_9 = P[144];
     const se23_real_t wg = q->wg;
     const se23_real_t t1 = p9_9 + wg;
-    out[(stride * 9) + 9] = t1;
-    const se23_real_t p9_10 = P[(stride * 9) + 10];
-    out[(stride * 9) + 10] = p9_10;
-    out[(stride * 10) + 9] = p9_10;
-    const se23_real_t p9_11 = P[(stride * 9) + 11];
-    out[(stride * 9) + 11] = p9_11;
-    out[(stride * 11) + 9] = p9_11;
-    const se23_real_t p10_10 = P[(stride * 10) + 10];
+    out[144] = t1;
+    const se23_real_t p9_10 = P[145];
+    out[145] = p9_10;
+    out[159] = p9_10;
+    const se23_real_t p9_11 = P[146];
+    out[146] = p9_11;
+    out[174] = p9_11;
+    const se23_real_t p10_10 = P[160];
     const se23_real_t t2 = p10_10 + wg;
-    out[(stride * 10) + 10] = t2;
-    const se23_real_t p10_11 = P[(stride * 10) + 11];
-    out[(stride * 10) + 11] = p10_11;
-    out[(stride * 11) + 10] = p10_11;
-    const se23_real_t p11_11 = P[(stride * 11) + 11];
+    out[160] = t2;
+    const se23_real_t p10_11 = P[161];
+    out[161] = p10_11;
+    out[175] = p10_11;
+    const se23_real_t p11_11 = P[176];
     const se23_real_t t3 = p11_11 + wg;
-    out[(stride * 11) + 11] = t3;
-    const se23_real_t p9_12 = P[(stride * 9) + 12];
-    out[(stride * 9) + 12] = p9_12;
-    out[(stride * 12) + 9] = p9_12;
-    const se23_real_t p9_13 = P[(stride * 9) + 13];
-    out[(stride * 9) + 13] = p9_13;
-    out[(stride * 13) + 9] = p9_13;
-    const se23_real_t p9_14 = P[(stride * 9) + 14];
-    out[(stride * 9) + 14] = p9_14;
-    out[(stride * 14) + 9] = p9_14;
-    const se23_real_t p10_12 = P[(stride * 10) + 12];
-    out[(stride * 10) + 12] = p10_12;
-    out[(stride * 12) + 10] = p10_12;
-    const se23_real_t p10_13 = P[(stride * 10) + 13];
-    out[(stride * 10) + 13] = p10_13;
-    out[(stride * 13) + 10] = p10_13;
-    const se23_real_t p10_14 = P[(stride * 10) + 14];
-    out[(stride * 10) + 14] = p10_14;
-    out[(stride * 14) + 10] = p10_14;
-    const se23_real_t p11_12 = P[(stride * 11) + 12];
-    out[(stride * 11) + 12] = p11_12;
-    out[(stride * 12) + 11] = p11_12;
-    const se23_real_t p11_13 = P[(stride * 11) + 13];
-    out[(stride * 11) + 13] = p11_13;
-    out[(stride * 13) + 11] = p11_13;
-    const se23_real_t p11_14 = P[(stride * 11) + 14];
-    out[(stride * 11) + 14] = p11_14;
-    out[(stride * 14) + 11] = p11_14;
-    const se23_real_t p12_12 = P[(stride * 12) + 12];
+    out[176] = t3;
+    const se23_real_t p9_12 = P[147];
+    out[147] = p9_12;
+    out[189] = p9_12;
+    const se23_real_t p9_13 = P[148];
+    out[148] = p9_13;
+    out[204] = p9_13;
+    const se23_real_t p9_14 = P[149];
+    out[149] = p9_14;
+    out[219] = p9_14;
+    const se23_real_t p10_12 = P[162];
+    out[162] = p10_12;
+    out[190] = p10_12;
+    const se23_real_t p10_13 = P[163];
+    out[163] = p10_13;
+    out[205] = p10_13;
+    const se23_real_t p10_14 = P[164];
+    out[164] = p10_14;
+    out[220] = p10_14;
+    const se23_real_t p11_12 = P[177];
+    out[177] = p11_12;
+    out[191] = p11_12;
+    const se23_real_t p11_13 = P[178];
+    out[178] = p11_13;
+    out[206] = p11_13;
+    const se23_real_t p11_14 = P[179];
+    out[179] = p11_14;
+    out[221] = p11_14;
+    const se23_real_t p12_12 = P[192];
     const se23_real_t wa = q->wa;
     const se23_real_t t4 = p12_12 + wa;
-    out[(stride * 12) + 12] = t4;
-    const se23_real_t p12_13 = P[(stride * 12) + 13];
-    out[(stride * 12) + 13] = p12_13;
-    out[(stride * 13) + 12] = p12_13;
-    const se23_real_t p12_14 = P[(stride * 12) + 14];
-    out[(stride * 12) + 14] = p12_14;
-    out[(stride * 14) + 12] = p12_14;
-    const se23_real_t p13_13 = P[(stride * 13) + 13];
+    out[192] = t4;
+    const se23_real_t p12_13 = P[193];
+    out[193] = p12_13;
+    out[207] = p12_13;
+    const se23_real_t p12_14 = P[194];
+    out[194] = p12_14;
+    out[222] = p12_14;
+    const se23_real_t p13_13 = P[208];
     const se23_real_t t5 = p13_13 + wa;
-    out[(stride * 13) + 13] = t5;
-    const se23_real_t p13_14 = P[(stride * 13) + 14];
-    out[(stride * 13) + 14] = p13_14;
-    out[(stride * 14) + 13] = p13_14;
-    const se23_real_t p14_14 = P[(stride * 14) + 14];
+    out[208] = t5;
+    const se23_real_t p13_14 = P[209];
+    out[209] = p13_14;
+    out[223] = p13_14;
+    const se23_real_t p14_14 = P[224];
     const se23_real_t t6 = p14_14 + wa;
-    out[(stride * 14) + 14] = t6;
+    out[224] = t6;
 }
 
 /* 9 and 15 states, after E: S += G X G^T: 216 multiplies and 261 adds

@@ -474,15 +474,14 @@ SIGNATURES = {
                 "cross blocks, S = E's gyro terms",
                 "const se23_pose_t *U, se23_real_t dt, const se23_input_blocks_t *Bt,\n"
                 "const se23_step_noise_t *q, const se23_real_t *P, se23_real_t *out,\n"
-                "int stride, se23_cov_pose_t *S"),
+                "se23_cov_pose_t *S"),
     "bias15a": ("se23_cov_step15_accel", "15 states, second stage: the accel-bias "
                 "cross blocks, S += E's accel terms",
                 "const se23_pose_t *U, se23_real_t dt, const se23_input_blocks_t *Bt,\n"
                 "const se23_step_noise_t *q, const se23_real_t *P, se23_real_t *out,\n"
-                "int stride, se23_cov_pose_t *S"),
+                "se23_cov_pose_t *S"),
     "bias15w": ("se23_cov_step15_bias", "15 states, third stage: the bias block",
-                "const se23_step_noise_t *q, const se23_real_t *P, se23_real_t *out,\n"
-                "int stride"),
+                "const se23_step_noise_t *q, const se23_real_t *P, se23_real_t *out"),
     "shear": ("se23_cov_shear_pose", "9 and 15 states, after E: S += G X G^T",
               "const se23_pose_t *U, se23_real_t dt, const se23_real_t *P, int stride,\n"
               "se23_cov_pose_t *S"),
@@ -500,9 +499,13 @@ def function(mode):
         else:
             kernel(g, mode)
     reread = mode in ("bias15g", "bias15a")
-    probe = Gen(reread=reread)
+    # The bias stages exist only for 15 states, whose covariance always has
+    # row stride SE23_GAUSS_NMAX: constant offsets (loads with an immediate,
+    # no address arithmetic). The pose stages serve strides 9 and 15.
+    stride = 15 if mode.startswith("bias15") else None
+    probe = Gen(reread=reread, stride=stride)
     run(probe)
-    g = Gen(used=probe.used, stored=probe.stored, reread=reread)
+    g = Gen(used=probe.used, stored=probe.stored, reread=reread, stride=stride)
     run(g)
     name, what, params = SIGNATURES[mode]
     pad = " " * (len(name) + 6)
