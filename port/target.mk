@@ -143,6 +143,13 @@ $(TGT)/$(1)/walk_replay_corrupt.elf: $(call TGT_WALK_OBJS,$(1)) $(TGT)/$(1)/walk
                                      port/cortex-m/sections.ld
 	$(ARM_CC) $(2) $(TGT_LDFLAGS) -u _printf_float -Tport/cortex-m/$(TGT_BOARD_$(1)).ld \
 	    $$(filter %.o %.a,$$^) -lm -o $$@
+$(TGT)/$(1)/footprint_%.o: tools/target/footprint_main.c $(LIB_HDRS) | $(TGT)/$(1)/port
+	$(ARM_CC) $(2) $(TGT_CFLAGS) -DSE23_CFG_DOUBLE=$(3) \
+	    -DFOOTPRINT=$$(TGT_FOOTPRINT_$$*) -c $$< -o $$@
+$(TGT)/$(1)/footprint_%.elf: $(TGT)/$(1)/footprint_%.o $(call TGT_PORT_OBJS,$(1)) \
+                             $(BUILD)/lib-$(1)/libse23.a port/cortex-m/sections.ld
+	$(ARM_CC) $(2) $(TGT_LDFLAGS) -Tport/cortex-m/$(TGT_BOARD_$(1)).ld \
+	    -Wl,-Map,$$(@:.elf=.map) $$(filter %.o %.a,$$^) -lm -o $$@
 $(TGT)/$(1)/port_selftest.elf: $(TGT)/$(1)/port_selftest.o $(call TGT_PORT_OBJS,$(1)) \
                                port/cortex-m/sections.ld port/cortex-m/$(TGT_BOARD_$(1)).ld
 	$(ARM_CC) $(2) $(TGT_LDFLAGS) -Tport/cortex-m/$(TGT_BOARD_$(1)).ld \
@@ -150,6 +157,12 @@ $(TGT)/$(1)/port_selftest.elf: $(TGT)/$(1)/port_selftest.o $(call TGT_PORT_OBJS,
 endef
 $(eval $(call tgt_variant,m4f-float,$(M4F_FLAGS),0))
 $(eval $(call tgt_variant,m7-double,$(M7_FLAGS),1))
+
+# The footprint images (tools/target/footprint_main.c): linked, never run.
+TGT_FOOTPRINT_none := 0
+TGT_FOOTPRINT_kernels := 1
+TGT_FOOTPRINT_filter := 2
+TGT_FOOTPRINTS := none kernels filter
 
 TGT_RUN_IMAGES := port_selftest tv_test ins_replay walk_replay
 TGT_IMAGES := $(foreach v,$(TGT_VARIANTS),$(foreach i,$(TGT_RUN_IMAGES) tv_corrupt ins_replay_corrupt \
@@ -237,7 +250,7 @@ $(TGT)/m7-double/opts/%.o: src/%.c $(LIB_HDRS) port/cortex-m/se23_port_opts.h
 PY3 ?= /usr/bin/python3
 TGT_BUDGETS := tests/target/budgets
 .PHONY: gates-target
-gates-target: cross target
+gates-target: cross target footprint-images
 	$(PY3) tools/target/symbol_gate.py soft-double $(BUILD)/lib-m4f-float/*.o
 	$(foreach v,$(TGT_VARIANTS),$(PY3) tools/target/symbol_gate.py heap $(BUILD)/lib-$(v)/*.o &&) true
 	$(foreach v,$(TGT_VARIANTS),$(PY3) tools/target/symbol_gate.py stdio $(BUILD)/lib-$(v)/*.o &&) true
@@ -245,6 +258,12 @@ gates-target: cross target
 	    $(TGT)/$(v)/tv_test.elf,$(TGT)/$(v)/ins_replay.elf $(TGT_BUDGETS)/stack.txt $(v) &&) true
 	$(foreach v,$(TGT_VARIANTS),$(PY3) tools/target/size_gate.py $(BUILD)/lib-$(v)/libse23.a \
 	    $(TGT_BUDGETS)/size.txt $(v) &&) true
+	$(foreach v,$(TGT_VARIANTS),$(PY3) tools/target/footprint.py $(v) \
+	    $(foreach i,kernels filter none,$(TGT)/$(v)/footprint_$(i).map) &&) true
+
+# The footprint images of both variants.
+.PHONY: footprint-images
+footprint-images: $(foreach v,$(TGT_VARIANTS),$(foreach i,$(TGT_FOOTPRINTS),$(TGT)/$(v)/footprint_$(i).elf))
 
 # Instruction counts (make bench-target): the benchmark image of each
 # variant (tools/target/bench_main.c) under QEMU with the counting plugin

@@ -6,7 +6,10 @@
 #  - worst-case stack of every public function, callees included, within
 #    tests/target/budgets/stack.txt (tools/target/stack_gate.py, from the
 #    -fstack-usage/-fcallgraph-info=su output);
-#  - .text + .rodata of the library within tests/target/budgets/size.txt.
+#  - .text + .rodata of the library within tests/target/budgets/size.txt;
+#  - and, a report rather than a gate, what a firmware links of it
+#    (tools/target/footprint.py on the footprint images' link maps; fails
+#    only if a map cannot be read).
 # Each gate is also shown to reject a fixture built to violate it
 # (tests/target/gate_fixtures), so a gate that cannot fail would show here.
 PY3=/usr/bin/python3
@@ -36,6 +39,12 @@ for gate_v in m4f-float m7-double; do
         tests/target/budgets/stack.txt "$gate_v"
     check "gate-$gate_v-size" $PY3 tools/target/size_gate.py "$BUILD/lib-$gate_v/libse23.a" \
         tests/target/budgets/size.txt "$gate_v"
+done
+check footprint-images make -s footprint-images BUILD="$BUILD"
+for gate_v in m4f-float m7-double; do
+    check "footprint-$gate_v" $PY3 tools/target/footprint.py "$gate_v" \
+        "$BUILD/target/$gate_v/footprint_kernels.map" "$BUILD/target/$gate_v/footprint_filter.map" \
+        "$BUILD/target/$gate_v/footprint_none.map"
 done
 gate_rejects gate-heap-rejects-fixture "malloc used by fixture_heap" \
     $PY3 tools/target/symbol_gate.py heap "$GATE_FIX/bad_symbols/bad_symbols.o"
