@@ -31,7 +31,8 @@ H_COMMON := tools/lcm/harness.c tools/lcm/ldmath.c
 H_SIM_SRCS := $(wildcard tools/sim/*.c) $(H_COMMON)
 H_INS_SRCS := $(wildcard tools/ins/*.c) $(H_COMMON) tools/lcm/logfile.c
 H_REPORT_SRCS := $(wildcard tools/report/*.c) $(H_COMMON) tools/lcm/logfile.c
-H_WALK_SRCS := tools/walk/main.c tools/report/logread.c $(H_COMMON) tools/lcm/logfile.c
+H_WALK_SRCS := tools/walk/main.c tools/report/logread.c tools/report/metrics.c $(H_COMMON) \
+               tools/lcm/logfile.c
 H_CORRUPT_SRCS := tools/lcm/corrupt.c tools/lcm/corrupt_framing.c tools/lcm/corrupt_nav.c \
                   tools/lcm/logfile.c $(H_COMMON)
 H_SIMCHECK_SRCS := tools/lcm/simcheck.c tools/lcm/logfile.c $(H_COMMON)

@@ -24,8 +24,12 @@ w_import() {
 check walk-import w_import
 # The ZUPTs' mean NIS (0.672 measured, README "A real walk") within
 # [0.5, 0.85]: the preset's ZUPT sigma still matches the walk's stance.
+# The closure's normalised error against the filter's own covariance
+# (31.2 measured: the filter is overconfident about its drift, README) may
+# not grow past that plus 25 %: 39.
 w_double() {
-    w_run se23-ins double "$WVG" && "$WB/se23-walk" --max-closure 0.172 "$WW/double.log" &&
+    w_run se23-ins double "$WVG" &&
+        "$WB/se23-walk" --max-closure 0.172 --max-closure-nis 39 "$WW/double.log" &&
         grep -q "^  imu_missing  *238\$" "$WW/double.txt" &&
         awk '$1 == "zupt_nis_mean" { ok = ($2 >= 0.5 && $2 <= 0.85) } END { exit ok ? 0 : 1 }' \
             "$WW/double.txt"
@@ -42,6 +46,14 @@ w_weak_zupt() {
         ! "$WB/se23-walk" --max-closure 0.172 "$WW/weak.log"
 }
 check walk-closure-can-fail w_weak_zupt
+# The normalised-error bound can fail: ZUPTs of 1 cm/s per sample, far
+# stronger than a foot in stance holds, make the filter sure of its
+# position to 6 mm while it drifts by 20 cm (948).
+w_strong_zupt() {
+    w_run se23-ins strong "" "--zupt-sigma-v 0.01" &&
+        ! "$WB/se23-walk" --max-closure-nis 39 "$WW/strong.log"
+}
+check walk-closure-nis-can-fail w_strong_zupt
 # The misalignment study (make walk-misalign, README "A real walk"): no
 # rotation gives the preset's closure of the run above; 0.5 degrees about
 # y takes more than 5 cm off it (0.064 m against 0.137 m).

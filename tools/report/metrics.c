@@ -6,13 +6,12 @@
 
 #include "../lcm/ldmath.h"
 
-/* e^T P^-1 e for the leading n x n block of the 15x15 P; NaN if singular. */
-static double nees(const double *P, const double *e, int n)
+double metrics_nees(const double *P, int stride, const double *e, int n)
 {
     ld_t L[15][15], y[15], q = 0.0L;
     int i, j, k;
     for (j = 0; j < n; j++) {
-        ld_t d = P[15 * j + j];
+        ld_t d = P[stride * j + j];
         for (k = 0; k < j; k++) {
             d -= L[j][k] * L[j][k];
         }
@@ -21,7 +20,7 @@ static double nees(const double *P, const double *e, int n)
         }
         L[j][j] = sqrtl(d);
         for (i = j + 1; i < n; i++) {
-            ld_t s = P[15 * i + j];
+            ld_t s = P[stride * i + j];
             for (k = 0; k < j; k++) {
                 s -= L[i][k] * L[j][k];
             }
@@ -107,7 +106,7 @@ void metrics_epoch(const se23lcm_truth *tr, const se23lcm_nav_state *nav, epoch_
         err[9 + i] = tr->b_g[i] - nav->b_g[i];
         err[12 + i] = tr->b_a[i] - nav->b_a[i];
     }
-    e->nees9 = nees(nav->P, err, 9);
-    e->nees15 = has_bias ? nees(nav->P, err, 15) : NAN;
+    e->nees9 = metrics_nees(nav->P, 15, err, 9);
+    e->nees15 = has_bias ? metrics_nees(nav->P, 15, err, 15) : NAN;
     e->status = nav->status;
 }

@@ -29,6 +29,11 @@ typedef struct {
     int status;
 } epoch_t;
 
+/** e^T P^-1 e for the leading n x n block (n <= 15) of P, row stride
+ *  `stride`, by its Cholesky factor in long double; NaN if that block is
+ *  not positive definite. */
+double metrics_nees(const double *P, int stride, const double *e, int n);
+
 /** Fills e from a truth and an estimate at the same time. */
 void metrics_epoch(const se23lcm_truth *tr, const se23lcm_nav_state *nav, epoch_t *e);
 

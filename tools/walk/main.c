@@ -14,10 +14,16 @@
  *    long rest, so the closure is read when the foot comes down;
  *  - closure error = |p_last - p_first| (3D), and its horizontal and
  *    vertical parts;
- *  - distance walked = the path length through the stance positions.
+ *  - distance walked = the path length through the stance positions;
+ *  - the closure's normalised error e^T C^-1 e, C the filter's own
+ *    covariance of the last stance position (R P_rhorho R^T): the start
+ *    defines the frame, so the first position's variance (1 mm^2) and its
+ *    correlation with the last are left out. Chi-square with 3 degrees of
+ *    freedom if the filter's covariance is honest about its drift.
  *
  * Run with --help for the options; exit status 1 if --max-closure is given
- * and the 3D closure error exceeds it.
+ * and the 3D closure error exceeds it, or --max-closure-nis and the
+ * normalised error exceeds that.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
@@ -28,6 +34,7 @@
 
 #include "../lcm/harness.h"
 #include "../report/logread.h"
+#include "../report/metrics.h"
 
 #define ST_INITIALISED 0x001
 #define ST_STATIONARY 0x080
@@ -39,6 +46,7 @@ typedef struct {
     const char *python;
     double merge;
     double max_closure;
+    double max_closure_nis;
 } walk_opts_t;
 
 static void usage(FILE *f)
@@ -50,7 +58,9 @@ static void usage(FILE *f)
                "  --plot-script PATH  plotter (tools/walk/plot_walk.py)\n"
                "  --python PATH       interpreter with matplotlib (/usr/bin/python3)\n"
                "  --merge S           stance runs closer than S merge into one phase (0.1)\n"
-               "  --max-closure M     exit 1 if the 3D closure error exceeds M metres\n");
+               "  --max-closure M     exit 1 if the 3D closure error exceeds M metres\n"
+               "  --max-closure-nis X exit 1 if the closure's normalised error (3 dof)\n"
+               "                      exceeds X\n");
 }
 
 static double speed_sigma(const se23lcm_nav_state *m)
@@ -75,6 +85,23 @@ static double speed_sigma(const se23lcm_nav_state *m)
     return sqrt(s > 0.0 ? s : 0.0);
 }
 
+/* C = R P_rhorho R^T, the covariance of the position in the nav frame (P
+ * is of the body-frame error: p = pbar + R rho). */
+static void position_cov(const se23lcm_nav_state *m, double C[3][3])
+{
+    int i, j, k, l;
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) {
+            C[i][j] = 0.0;
+            for (k = 0; k < 3; k++) {
+                for (l = 0; l < 3; l++) {
+                    C[i][j] += m->R_nb[3 * i + k] * m->P[15 * (6 + k) + 6 + l] * m->R_nb[3 * j + l];
+                }
+            }
+        }
+    }
+}
+
 static void write_csv(const char *path, const log_data_t *d)
 {
     FILE *f = fopen(path, "w");
@@ -88,19 +115,12 @@ static void write_csv(const char *path, const log_data_t *d)
         const se23lcm_nav_state *m = &d->nav[k];
         const double sp = sqrt(m->v_n[0] * m->v_n[0] + m->v_n[1] * m->v_n[1] +
                                m->v_n[2] * m->v_n[2]);
-        double sig[3] = {0.0, 0.0, 0.0};
-        int i, j, l;
-        for (i = 0; i < 3; i++) { /* diag of R P_rhorho R^T */
-            for (j = 0; j < 3; j++) {
-                for (l = 0; l < 3; l++) {
-                    sig[i] += m->R_nb[3 * i + j] * m->P[15 * (6 + j) + 6 + l] * m->R_nb[3 * i + l];
-                }
-            }
-        }
+        double C[3][3];
+        position_cov(m, C);
         fprintf(f, "%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6g,%.6g,%.6g,%.6g,%d\n",
                 (double)(m->t_ns - d->nav[0].t_ns) * 1e-9, m->p_n[0], m->p_n[1], m->p_n[2],
-                m->v_n[0], m->v_n[1], m->v_n[2], sp, speed_sigma(m), sqrt(sig[0]), sqrt(sig[1]),
-                sqrt(sig[2]), m->detector_stat, (m->status & ST_STATIONARY) != 0);
+                m->v_n[0], m->v_n[1], m->v_n[2], sp, speed_sigma(m), sqrt(C[0][0]), sqrt(C[1][1]),
+                sqrt(C[2][2]), m->detector_stat, (m->status & ST_STATIONARY) != 0);
     }
     fclose(f);
 }
@@ -114,7 +134,7 @@ static int plot(const walk_opts_t *o)
 
 int main(int argc, char **argv)
 {
-    walk_opts_t o = {NULL, NULL, "tools/walk/plot_walk.py", "/usr/bin/python3", 0.1, -1.0};
+    walk_opts_t o = {NULL, NULL, "tools/walk/plot_walk.py", "/usr/bin/python3", 0.1, -1.0, -1.0};
     const harness_opt_t opts[] = {
         {"--csv", HOPT_STR, &o.csv, 0, 0, NULL},
         {"--plots", HOPT_STR, &o.plots, 0, 0, NULL},
@@ -122,6 +142,7 @@ int main(int argc, char **argv)
         {"--python", HOPT_STR, &o.python, 0, 0, NULL},
         {"--merge", HOPT_DOUBLE, &o.merge, 0.0, 10.0, NULL},
         {"--max-closure", HOPT_DOUBLE, &o.max_closure, 0.0, 1e9, NULL},
+        {"--max-closure-nis", HOPT_DOUBLE, &o.max_closure_nis, 0.0, 1e9, NULL},
     };
     const char *pos[2];
     int n_pos = 0, ok = 1;
@@ -129,7 +150,7 @@ int main(int argc, char **argv)
     size_t k, first = 0, last_start = 0, phases = 0;
     int64_t last_stance_ns = 0;
     int in_stance = 0, have_stance = 0;
-    double dist = 0.0, prev[3], e[3], h, v;
+    double dist = 0.0, prev[3], e[3], h, v, C[3][3], nis;
     if (harness_parse_opts("se23-walk", argc, argv, opts, (int)(sizeof opts / sizeof opts[0]),
                            usage, pos, &n_pos) != 0 ||
         n_pos != 1) {
@@ -177,6 +198,8 @@ int main(int argc, char **argv)
     }
     h = sqrt(e[0] * e[0] + e[1] * e[1]);
     v = fabs(e[2]);
+    position_cov(&d.nav[last_start], C);
+    nis = metrics_nees(&C[0][0], 3, e, 3);
     printf("se23-walk: %s\n", pos[0]);
     printf("  walk               %.1f s, %zu nav states\n",
            (double)(d.nav[d.n_nav - 1].t_ns - d.nav[first].t_ns) * 1e-9, d.n_nav - first);
@@ -188,6 +211,9 @@ int main(int argc, char **argv)
     printf("  closure read at    t = %.3f s (start of the last stance), %.2f %% of the distance\n",
            (double)(d.nav[last_start].t_ns - d.nav[first].t_ns) * 1e-9,
            dist > 0.0 ? 100.0 * sqrt(h * h + v * v) / dist : 0.0);
+    printf("  filter's 1-sigma   %.3f m N, %.3f m E, %.3f m D there; normalised closure "
+           "error %.2f (3 dof, 99 %% below 11.34)\n",
+           sqrt(C[0][0]), sqrt(C[1][1]), sqrt(C[2][2]), nis);
     if (o.csv != NULL) {
         write_csv(o.csv, &d);
     }
@@ -203,6 +229,11 @@ int main(int argc, char **argv)
             printf("  plots              %s/{walk_path,walk_time}.png (data: %s/walk.csv)\n",
                    o.plots, o.plots);
         }
+    }
+    if (o.max_closure_nis >= 0.0 && !(nis <= o.max_closure_nis)) {
+        printf("WALK CHECK FAILED: normalised closure error %.2f above %.2f\n", nis,
+               o.max_closure_nis);
+        ok = 0;
     }
     if (o.max_closure >= 0.0 && sqrt(h * h + v * v) > o.max_closure) {
         printf("WALK CHECK FAILED: closure %.3f m above %.3f m\n", sqrt(h * h + v * v),
