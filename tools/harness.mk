@@ -11,6 +11,8 @@
 #                    loop-closure error, distance, stance phases, plots
 #   make walk-misalign  the walk's closure against a misalignment of the
 #                    accelerometer's triad (MISALIGN="rx,ry,rz ..." degrees)
+#   make walk-sim    the walk's simulated twin (se23-sim --scenario walk) with
+#                    and without such a misalignment (MISALIGN=..., SEED=N)
 #   make bench-ins   se23-ins throughput on a recorded log of 1.2 M IMU samples
 
 H := $(BUILD)/harness
@@ -44,7 +46,7 @@ H_HDRS := $(wildcard tools/lcm/*.h tools/sim/*.h tools/ins/*.h tools/report/*.h 
 H_LIB := $(BUILD)/lib-host-double/libse23.a
 h_objs = $(patsubst %.c,$(H)/obj/%.o,$(1))
 
-.PHONY: harness demo demo-live demo-walk walk-misalign bench-ins soak
+.PHONY: harness demo demo-live demo-walk walk-misalign walk-sim bench-ins soak
 
 harness: $(H_BIN)/se23-sim $(H_BIN)/se23-ins $(H_BIN)/se23-report $(H_BIN)/se23-corrupt \
          $(H_BIN)/se23-simcheck $(H_BIN)/se23-walk $(H_BIN)/se23-ins-float \
@@ -129,6 +131,11 @@ walk-misalign:
 	@sh tools/install-deps.sh $(BUILD)
 	@$(MAKE) -s --no-print-directory harness BUILD=$(BUILD)
 	@sh tools/walk/misalign-sweep.sh $(H) $(MISALIGN)
+
+walk-sim:
+	@sh tools/install-deps.sh $(BUILD)
+	@$(MAKE) -s --no-print-directory harness BUILD=$(BUILD)
+	@sh tools/walk/sim-walk.sh $(H) $(MISALIGN)
 
 demo-live:
 	@sh tools/install-deps.sh $(BUILD)

@@ -184,6 +184,27 @@ h_sim_stationary_can_fail() {
             "$HB/se23-simcheck" --stationary 10 --max-accel 1 "$HW/rest-uav.sim.log"
 }
 check harness-sim-stationary-can-fail h_sim_stationary_can_fail
+#    An accelerometer triad rotated against the gyroscope's
+#    (--accel-misalign): at rest with --imu perfect every accelerometer
+#    sample is M R^T (-g), M by Rodrigues' formula written out in the
+#    checker, and SIM_INFO records the rotation; the log checked against
+#    another rotation, and a log without one, must fail.
+H_MIS=0.5,-1,2
+h_sim_misalign() {
+    $HVG "$HB/se23-sim" --scenario static --duration 5 --imu perfect --gnss-rate 0 \
+        --accel-misalign $H_MIS --url "file://$HW/misalign.sim.log?mode=w" &&
+        "$HB/se23-simcheck" --accel-misalign $H_MIS "$HW/misalign.sim.log"
+}
+check harness-sim-accel-misalign h_sim_misalign
+h_sim_misalign_can_fail() {
+    h_fails misalign-other.txt "^FAIL misalign: the accelerometer" \
+        "$HB/se23-simcheck" --accel-misalign 0.5,1,2 "$HW/misalign.sim.log" &&
+        "$HB/se23-sim" --scenario static --duration 5 --imu perfect --gnss-rate 0 \
+            --url "file://$HW/aligned.sim.log?mode=w" &&
+        h_fails misalign-none.txt "^FAIL misalign: the accelerometer" \
+            "$HB/se23-simcheck" --accel-misalign $H_MIS "$HW/aligned.sim.log"
+}
+check harness-sim-accel-misalign-can-fail h_sim_misalign_can_fail
 h_stationary_consistent() {
     h_run e2e-rest --scenario uav --duration 40 --seed 11 --stationary 10 -- --preint 1 &&
         "$HB/se23-report" --check "$HW/e2e-rest.sim.log" "$HW/e2e-rest.ins.log" &&

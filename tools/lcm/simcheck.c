@@ -17,14 +17,20 @@
  *             --tol-rest), and the vehicle moves after S (max |v| > 1e-3 m/s,
  *             not for the static scenario);
  *   smooth    between consecutive truths |dv| <= --max-accel * dt;
- *   info      SIM_INFO records the lever arm, latency and rest time checked.
+ *   misalign  with --accel-misalign RX,RY,RZ [deg] (the static scenario,
+ *             --imu perfect): every accelerometer sample is M R^T (-g_n),
+ *             M = exp(m^) by Rodrigues' formula written out here, within
+ *             --tol-v, R the first truth and g_n SIM_INFO's;
+ *   info      SIM_INFO records the lever arm, latency, rest time and
+ *             accelerometer misalignment checked.
  *
  * Prints one line per check, "FAIL <check>: ..." for each failure, then
  * SIMCHECK PASSED (exit 0) or SIMCHECK FAILED (exit 1); 2: bad usage or an
  * unreadable log.
  *
  * usage: se23-simcheck [--lever X,Y,Z] [--latency S] [--stationary S]
- *                      [--tol-p M] [--tol-v MPS] [--tol-rest X] [--max-accel A] LOG
+ *                      [--accel-misalign RX,RY,RZ] [--tol-p M] [--tol-v MPS]
+ *                      [--tol-rest X] [--max-accel A] LOG
  */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
@@ -43,6 +49,7 @@
 
 typedef struct {
     double lever[3];
+    double misalign[3]; /* [deg] */
     double latency, stationary;
     double tol_p, tol_v, tol_rest, max_accel;
 } chk_opts_t;
@@ -79,8 +86,8 @@ static void fail(const char *what, const char *fmt, ...)
 static void usage(FILE *f)
 {
     fprintf(f, "usage: se23-simcheck [--lever X,Y,Z] [--latency S] [--stationary S]\n"
-               "                     [--tol-p M] [--tol-v MPS] [--tol-rest X] [--max-accel A]"
-               " LOG\n"
+               "                     [--accel-misalign RX,RY,RZ] [--tol-p M] [--tol-v MPS]\n"
+               "                     [--tol-rest X] [--max-accel A] LOG\n"
                "  defaults: lever 0,0,0, latency 0, stationary 0, tol-p 2e-5 m,\n"
                "  tol-v 2e-5 m/s (each plus 6 sigma of the fix), tol-rest 1e-9 (m/s, m, rad),\n"
                "  max-accel 10 m/s^2\n");
@@ -343,15 +350,72 @@ static void check_smooth(const chk_opts_t *o, const chk_data_t *d)
     }
 }
 
+/* The rotation vector of --accel-misalign in radians. */
+static void misalign_rad(const chk_opts_t *o, double rv[3])
+{
+    int i;
+    for (i = 0; i < 3; i++) {
+        rv[i] = o->misalign[i] * (3.14159265358979323846 / 180.0);
+    }
+}
+
+static void check_misalign(const chk_opts_t *o, const chk_data_t *d)
+{
+    /* M = I + sin(t)/t m^ + (1 - cos(t))/t^2 m^2, t = |m| (Rodrigues) */
+    double m[3], M[3][3], u[3], e = 0.0;
+    const double *Rt = d->truth[0].R_nb, *g = d->info.g_n;
+    double t, a, b;
+    size_t k;
+    int i, j;
+    misalign_rad(o, m);
+    t = sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+    a = t > 0.0 ? sin(t) / t : 1.0;
+    b = t > 0.0 ? (1.0 - cos(t)) / (t * t) : 0.5;
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) {
+            M[i][j] = (i == j ? 1.0 - b * (t * t) : 0.0) + b * m[i] * m[j];
+        }
+    }
+    M[0][1] -= a * m[2];
+    M[0][2] += a * m[1];
+    M[1][0] += a * m[2];
+    M[1][2] -= a * m[0];
+    M[2][0] -= a * m[1];
+    M[2][1] += a * m[0];
+    for (i = 0; i < 3; i++) { /* u = M R^T (-g) */
+        u[i] = 0.0;
+        for (j = 0; j < 3; j++) {
+            u[i] -= (M[i][0] * Rt[3 * j] + M[i][1] * Rt[3 * j + 1] + M[i][2] * Rt[3 * j + 2]) * g[j];
+        }
+    }
+    for (k = 0; k < d->n_imu; k++) {
+        for (i = 0; i < 3; i++) {
+            e = fmax(e, fabs(d->imu[k].accel[i] - u[i]));
+        }
+    }
+    printf("misalign: %zu samples, max |f - M R^T (-g)| %.3g m/s^2 (tol %.3g)\n", d->n_imu, e,
+           o->tol_v);
+    if (d->info.scenario != 0 || d->info.imu_profile != 0) {
+        fail("misalign", "needs the static scenario and --imu perfect");
+    } else if (!(e <= o->tol_v)) {
+        fail("misalign", "the accelerometer is not the rotated gravity");
+    }
+}
+
 static void check_info(const chk_opts_t *o, const chk_data_t *d)
 {
     const se23lcm_sim_info *m = &d->info;
     int i, ok = m->gnss_latency_s == o->latency && m->stationary_s == o->stationary;
+    double rv[3];
+    misalign_rad(o, rv);
     for (i = 0; i < 3; i++) {
         ok = ok && m->lever_b[i] == o->lever[i];
+        ok = ok && fabs(m->accel_misalign_b[i] - rv[i]) <= 1e-15;
     }
-    printf("info: lever %g,%g,%g m, latency %g s, stationary %g s, ramp %g s\n", m->lever_b[0],
-           m->lever_b[1], m->lever_b[2], m->gnss_latency_s, m->stationary_s, m->ramp_s);
+    printf("info: lever %g,%g,%g m, latency %g s, stationary %g s, ramp %g s, "
+           "accelerometer rotation %g,%g,%g rad\n",
+           m->lever_b[0], m->lever_b[1], m->lever_b[2], m->gnss_latency_s, m->stationary_s,
+           m->ramp_s, m->accel_misalign_b[0], m->accel_misalign_b[1], m->accel_misalign_b[2]);
     if (!ok) {
         fail("info", "SIM_INFO does not record the options checked");
     }
@@ -368,6 +432,7 @@ int main(int argc, char **argv)
         {"--lever", HOPT_VEC3, o.lever, -inf, inf, NULL},
         {"--latency", HOPT_DOUBLE, &o.latency, 0.0, inf, NULL},
         {"--stationary", HOPT_DOUBLE, &o.stationary, 0.0, inf, NULL},
+        {"--accel-misalign", HOPT_VEC3, o.misalign, -inf, inf, NULL},
         {"--tol-p", HOPT_DOUBLE, &o.tol_p, 0.0, inf, NULL},
         {"--tol-v", HOPT_DOUBLE, &o.tol_v, 0.0, inf, NULL},
         {"--tol-rest", HOPT_DOUBLE, &o.tol_rest, 0.0, inf, NULL},
@@ -407,6 +472,9 @@ int main(int argc, char **argv)
             check_rest(&o, &d);
         }
         check_smooth(&o, &d);
+        if (o.misalign[0] != 0.0 || o.misalign[1] != 0.0 || o.misalign[2] != 0.0) {
+            check_misalign(&o, &d);
+        }
     }
     free(d.truth);
     free(d.imu);

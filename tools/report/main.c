@@ -159,7 +159,9 @@ static group_stats_t group_stats(const epoch_t *ep, size_t n, group_t g)
     return s;
 }
 
-static const char *const scen_names[] = {"static", "uav", "car", "nav"};
+/* The simulator's scenarios by number (tools/sim/traj.h). */
+static const char *const scen_names[] = {"static", "uav", "car", "nav", "walk"};
+#define N_SCEN ((int)(sizeof scen_names / sizeof scen_names[0]))
 
 static void print_header(const log_data_t *d)
 {
@@ -168,7 +170,7 @@ static void print_header(const log_data_t *d)
         const harness_imu_profile_t *p = harness_imu_profile(i->imu_profile);
         printf("se23 report: scenario %s, %.0f s, IMU %s at %.0f Hz, Earth rotation %s, "
                "GNSS %.3g Hz, seed %lld\n",
-               (i->scenario >= 0 && i->scenario < 4) ? scen_names[i->scenario] : "?",
+               (i->scenario >= 0 && i->scenario < N_SCEN) ? scen_names[i->scenario] : "?",
                i->duration_s, p ? p->name : "?", i->imu_rate_hz, i->earth_rotation ? "on" : "off",
                i->gnss_rate_hz, (long long)i->seed);
     } else {

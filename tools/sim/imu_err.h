@@ -1,9 +1,11 @@
 /**
  * @file imu_err.h
  * @brief IMU error model of the simulator and its random numbers:
- *        measured = true - b - n (the paper's signs, as in se23/gauss.h), n white with the profile's density
+ *        measured = M true - b - n (the paper's signs, as in se23/gauss.h), n white with the profile's density
  *        (per sample sigma = density / sqrt(dt), the mean of white noise
- *        over the interval), b = b0 + random walk (b0 ~ N(0, bias0^2)).
+ *        over the interval), b = b0 + random walk (b0 ~ N(0, bias0^2)),
+ *        M the accelerometer triad's rotation against the gyroscope's
+ *        (identity unless imu_err_misalign_accel sets it; I for the gyro).
  */
 #ifndef SIM_IMU_ERR_H
 #define SIM_IMU_ERR_H
@@ -28,10 +30,14 @@ typedef struct {
     rng_t rng;
     double b_g[3]; /**< current gyro bias [rad/s] */
     double b_a[3]; /**< current accel bias [m/s^2] */
+    double accel_rot[9]; /**< M of the accelerometer, row-major */
 } imu_err_t;
 
 /** Draws the constant biases from the profile with the given seed. */
 void imu_err_init(imu_err_t *e, const harness_imu_profile_t *prof, uint64_t seed);
+
+/** M = exp(rotvec^) for the accelerometer, rotvec in radians. */
+void imu_err_misalign_accel(imu_err_t *e, const double rotvec[3]);
 
 /**
  * Measured sample over an interval dt [s] from the true inputs, with the

@@ -61,14 +61,16 @@ typedef struct {
     double speed; /* < 0: default */
     int progress;
     int track;
+    double accel_misalign[3]; /* accelerometer triad rotation vector [deg] */
 } sim_opts_t;
 
 static void usage(FILE *f)
 {
     fprintf(f,
             "usage: se23-sim [options]\n"
-            "  --scenario static|uav|car|nav   trajectory (uav)\n"
-            "  --duration S                    length [s] (scenario default: 60/60/120/3600)\n"
+            "  --scenario static|uav|car|nav|walk   trajectory (uav)\n"
+            "  --duration S                    length [s] (scenario default:\n"
+            "                                  60/60/120/3600/26.8)\n"
             "  --imu-rate HZ                   100..2000 (200)\n"
             "  --imu perfect|mems|tactical|navigation   error profile (mems)\n"
             "  --earth on|off                  Earth rotation (on)\n"
@@ -93,6 +95,9 @@ static void usage(FILE *f)
             "                                  (default 0 for file://, else 1)\n"
             "  --no-track                      no tracking correction (tests)\n"
             "  --biases on|off                 the profile's biases and bias walks (on)\n"
+            "  --accel-misalign RX,RY,RZ       accelerometer triad rotated against the\n"
+            "                                  gyroscope's by this rotation vector, body\n"
+            "                                  frame, each within +-10 [deg] (0,0,0)\n"
             "  --progress                      progress line on stderr\n");
 }
 
@@ -124,6 +129,7 @@ static int parse_args(int argc, char **argv, sim_opts_t *o)
         {"--speed", HOPT_DOUBLE, &o->speed, 0.0, inf, NULL},
         {"--no-track", HOPT_FLAG, &o->track, 0, 0, NULL},
         {"--biases", HOPT_CHOICE, &o->biases, 0, 0, harness_on_off},
+        {"--accel-misalign", HOPT_VEC3, o->accel_misalign, -10.0, 10.0, NULL},
         {"--progress", HOPT_FLAG, &o->progress, 1, 0, NULL},
     };
     o->scenario = TRAJ_UAV;
@@ -141,6 +147,7 @@ static int parse_args(int argc, char **argv, sim_opts_t *o)
     o->gnss_sv[1] = 0.1;
     o->gnss_sv[2] = 0.2;
     memset(o->lever, 0, sizeof o->lever);
+    memset(o->accel_misalign, 0, sizeof o->accel_misalign);
     o->gnss_latency = 0.0;
     o->stationary = 0.0;
     o->truth_rate = 50.0;
@@ -227,6 +234,15 @@ static void publish_init(lcm_t *lc, const sim_opts_t *o, const truth_state_t *x,
     se23lcm_nav_state_publish(lc, HARNESS_CH_INIT, &m);
 }
 
+/* The --accel-misalign rotation vector in radians. */
+static void accel_misalign_rad(const sim_opts_t *o, double rv[3])
+{
+    int i;
+    for (i = 0; i < 3; i++) {
+        rv[i] = (double)((ld_t)o->accel_misalign[i] * DEG_L);
+    }
+}
+
 static void publish_info(lcm_t *lc, const char *ch, const sim_opts_t *o, const truth_env_t *env)
 {
     se23lcm_sim_info m;
@@ -245,6 +261,7 @@ static void publish_info(lcm_t *lc, const char *ch, const sim_opts_t *o, const t
     m.gnss_latency_s = o->gnss_latency;
     m.stationary_s = o->stationary;
     m.ramp_s = o->stationary > 0.0 ? traj_ramp_duration((traj_scenario_t)o->scenario) : 0.0;
+    accel_misalign_rad(o, m.accel_misalign_b);
     se23lcm_sim_info_publish(lc, ch, &m);
 }
 
@@ -431,6 +448,12 @@ int main(int argc, char **argv)
             prof.accel_bias_rw = 0.0;
         }
         imu_err_init(&err, &prof, (uint64_t)o.seed);
+        if (o.accel_misalign[0] != 0.0 || o.accel_misalign[1] != 0.0 ||
+            o.accel_misalign[2] != 0.0) { /* else M = I exactly */
+            double rv[3];
+            accel_misalign_rad(&o, rv);
+            imu_err_misalign_accel(&err, rv);
+        }
     }
     rng_seed(&rng_gnss, (uint64_t)o.seed ^ 0x5a5a5a5a5a5a5a5aULL);
     rng_seed(&rng_init, (uint64_t)o.seed ^ 0x0123456789abcdefULL);

@@ -110,9 +110,104 @@ static traj_raw_t raw_nav(ld_t t)
     return r;
 }
 
-static const char *const names[TRAJ_COUNT] = {"static", "uav", "car", "nav"};
-static const double durations[TRAJ_COUNT] = {60.0, 60.0, 120.0, 3600.0};
-static const double ramps[TRAJ_COUNT] = {1.0, 5.0, 10.0, 60.0};
+/*
+ * A foot-mounted IMU on a walk (README "A real walk", its simulated twin):
+ * WALK_REST s at rest, WALK_STRIDES strides around a circle that they
+ * close exactly, then at rest again. A stride of WALK_PERIOD s is a stance
+ * (the foot flat and still) then a swing of WALK_SWING s in which, with
+ * u = swing time / WALK_SWING in [0, 1],
+ *   the arc length grows by WALK_STRIDE m as the minimum-jerk step
+ *     m(u) = 10 u^3 - 15 u^4 + 6 u^5,
+ *   the foot rises WALK_HEIGHT m at most as 64 u^3 (1 - u)^3,
+ *   the foot pitches toe down, then toe up, by WALK_PITCH rad at most as
+ *     -u^3 (1 - u)^3 (1 - 2 u) / 0.0037190 (the bump's largest value),
+ * all three with zero first and second derivatives at u = 0 and 1, so the
+ * foot stops dead at each stance. The heading follows the circle's tangent.
+ */
+#define WALK_REST 5.0L
+#define WALK_STRIDES 16
+#define WALK_PERIOD 1.05L
+#define WALK_SWING 0.9L
+#define WALK_STRIDE 1.4L
+#define WALK_HEIGHT 0.12L
+#define WALK_PITCH 0.5L /* rad, ~29 deg */
+
+/* With its u-derivatives: 64 u^3 (1 - u)^3 (peak 1 at u = 1/2), or if odd
+ * u^3 (1 - u)^3 (1 - 2 u) scaled to a peak of 1 (at u = 0.2113). */
+static curve_t walk_bump(ld_t u, int odd)
+{
+    const ld_t a = u * (1.0L - u), da = 1.0L - 2.0L * u, dda = -2.0L;
+    curve_t c;
+    /* b = a^3: b' = 3 a^2 a', b'' = 6 a a'^2 + 3 a^2 a'' */
+    const ld_t b = a * a * a, db = 3.0L * a * a * da, ddb = 6.0L * a * da * da + 3.0L * a * a * dda;
+    if (odd == 0) {
+        c.f = 64.0L * b;
+        c.d1 = 64.0L * db;
+        c.d2 = 64.0L * ddb;
+    } else {
+        const ld_t k = 1.0L / 0.0037190381L;
+        c.f = k * b * da;
+        c.d1 = k * (db * da + b * -2.0L);
+        c.d2 = k * (ddb * da + 2.0L * db * -2.0L);
+    }
+    return c;
+}
+
+static traj_raw_t raw_walk(ld_t t)
+{
+    const ld_t radius = WALK_STRIDES * WALK_STRIDE / (2.0L * PI_L);
+    const ld_t tw = t - WALK_REST;
+    curve_t arc = constant(0.0L), up = constant(0.0L), pitch = constant(0.0L);
+    traj_raw_t r;
+    ld_t phi, cphi, sphi;
+    if (tw >= (ld_t)WALK_STRIDES * WALK_PERIOD) {
+        arc = constant(WALK_STRIDES * WALK_STRIDE);
+    } else if (tw > 0.0L) {
+        const ld_t k = floorl(tw / WALK_PERIOD);
+        const ld_t ts = tw - k * WALK_PERIOD - (WALK_PERIOD - WALK_SWING); /* into the swing */
+        arc = constant(k * WALK_STRIDE);
+        if (ts > 0.0L) {
+            const ld_t u = ts / WALK_SWING, w = 1.0L / WALK_SWING;
+            const ld_t u2 = u * u;
+            arc.f += WALK_STRIDE * u2 * u * (10.0L - 15.0L * u + 6.0L * u2);
+            arc.d1 = WALK_STRIDE * w * 30.0L * u2 * (1.0L - u) * (1.0L - u);
+            arc.d2 = WALK_STRIDE * w * w * 60.0L * u * (1.0L - u) * (1.0L - 2.0L * u);
+            up = walk_bump(u, 0);
+            pitch = walk_bump(u, 1);
+            up.f *= WALK_HEIGHT;
+            up.d1 *= WALK_HEIGHT * w;
+            up.d2 *= WALK_HEIGHT * w * w;
+            pitch.f *= -WALK_PITCH;
+            pitch.d1 *= -WALK_PITCH * w;
+            pitch.d2 *= -WALK_PITCH * w * w;
+        }
+    }
+    /* on the circle: x = R sin(s/R), y = R (1 - cos(s/R)) (NED, turning right) */
+    phi = arc.f / radius;
+    cphi = cosl(phi);
+    sphi = sinl(phi);
+    r.pos[0].f = radius * sphi;
+    r.pos[0].d1 = cphi * arc.d1;
+    r.pos[0].d2 = cphi * arc.d2 - sphi * arc.d1 * arc.d1 / radius;
+    r.pos[1].f = radius * (1.0L - cphi);
+    r.pos[1].d1 = sphi * arc.d1;
+    r.pos[1].d2 = sphi * arc.d2 + cphi * arc.d1 * arc.d1 / radius;
+    r.pos[2].f = -up.f;
+    r.pos[2].d1 = -up.d1;
+    r.pos[2].d2 = -up.d2;
+    r.roll = constant(0.0L);
+    r.pitch = pitch;
+    r.yaw.f = phi;
+    r.yaw.d1 = arc.d1 / radius;
+    r.yaw.d2 = arc.d2 / radius;
+    return r;
+}
+
+static const char *const names[TRAJ_COUNT] = {"static", "uav", "car", "nav", "walk"};
+static const double durations[TRAJ_COUNT] = {60.0, 60.0, 120.0, 3600.0,
+                                             (double)(2.0L * WALK_REST +
+                                                      WALK_STRIDES * WALK_PERIOD)};
+static const double ramps[TRAJ_COUNT] = {1.0, 5.0, 10.0, 60.0, 1.0};
 
 const char *traj_name(traj_scenario_t s)
 {
@@ -155,6 +250,9 @@ traj_point_t traj_eval(traj_scenario_t s, ld_t t)
         break;
     case TRAJ_NAV:
         r = raw_nav(t);
+        break;
+    case TRAJ_WALK:
+        r = raw_walk(t);
         break;
     case TRAJ_STATIC:
     default:

@@ -16,7 +16,9 @@ typedef enum {
     TRAJ_UAV = 1,    /**< smooth 3D figure-eight flight, 30 s loop, ~5 m/s, rolling/pitching */
     TRAJ_CAR = 2,    /**< planar figure-eight, 60 s loop, ~10 m/s, heading along the velocity */
     TRAJ_NAV = 3,    /**< aircraft in a 100 m/s coordinated turn, 20 min per circle */
-    TRAJ_COUNT = 4
+    TRAJ_WALK = 4,   /**< foot-mounted IMU: 16 strides of 1.4 m closing a circle, at rest
+                          5 s before and after (traj.c) */
+    TRAJ_COUNT = 5
 } traj_scenario_t;
 
 /** The reference state at one instant. */
@@ -28,7 +30,7 @@ typedef struct {
     ld_vec3_t w_nb_b; /**< angular rate of body w.r.t. nav, body frame [rad/s] */
 } traj_point_t;
 
-/** Name ("static", "uav", "car", "nav") of a scenario. */
+/** Name ("static", "uav", "car", "nav", "walk") of a scenario. */
 const char *traj_name(traj_scenario_t s);
 
 /** Scenario called name, or -1. */
