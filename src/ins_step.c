@@ -28,7 +28,6 @@ void se23_ins_factor_reset(se23_ins_t *ins)
     (void)se23_preint_unc_reset(&ins->g.b_g, &ins->g.b_a, SE23_INPUT_JAC_EXACT, &ins->fac.f);
     ins->fac.t0_ns = ins->t_ns;
     ins->fac.t1_ns = ins->t_ns;
-    ins->fac.seq0 = ins->seq + 1;
 }
 
 void se23_ins_factor_add(se23_ins_t *ins, const se23_imu_sample_t *prev,
@@ -38,6 +37,9 @@ void se23_ins_factor_add(se23_ins_t *ins, const se23_imu_sample_t *prev,
     int n, j;
     if (ins->cfg.preint_window <= SE23_R(0)) {
         return;
+    }
+    if (ins->fac.f.f.n == 0U) {
+        ins->fac.seq0 = ins->seq; /* the window's first sample (accept() has set seq) */
     }
     n = se23_ins_gap_steps(ins, prev, s);
     /* the same sub-intervals as the filter's prediction */

@@ -317,7 +317,11 @@ typedef struct {
 /** A finished preintegrated factor. */
 typedef struct {
     se23_preint_unc_t f;      /**< Deltas, covariance and bias Jacobian */
-    int64_t t0_ns, t1_ns, seq0;
+    int64_t t0_ns, t1_ns;     /**< the window it spans [ns] */
+    int64_t seq0;             /**< seq of the first sample received in it
+                               *   (samples lost just before that one are in
+                               *   the window too, interpolated: t0_ns is
+                               *   where it starts) */
 } se23_ins_factor_t;
 
 /** The filter (caller-owned; fields are read-only for the caller). Fields
