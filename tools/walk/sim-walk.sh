@@ -15,7 +15,10 @@
 # about x and about z. SEED (environment, default 1) seeds the sensor
 # errors. Prints one line per vector: the 3D / horizontal / vertical
 # closure, its normalised error against the filter's covariance (3 dof)
-# and the mean NIS of the live ZUPTs.
+# and the mean NIS of the live ZUPTs; then plots the height of each stance
+# of every run, and of the real walk if make demo-walk has run
+# (tools/walk/plot_twin.py; PYTHON, default /usr/bin/python3 with
+# matplotlib), into HARNESS_BUILD_DIR/walk-sim/twin_heights.png.
 set -eu
 H=${1:-build/harness}
 [ $# -gt 0 ] && shift
@@ -23,6 +26,9 @@ BIN="$H/bin"
 RUN="$H/walk-sim"
 VECTORS=${*:-"0,0,0 0,0.25,0 0,0.5,0 0,-0.5,0 0.5,0,0 0,0,0.5"}
 mkdir -p "$RUN"
+REAL="$H/walk/plots/walk.csv"
+set --
+[ -f "$REAL" ] && set -- "real walk (make demo-walk)=$REAL"
 echo "== se23 walk-sim: the simulated walk (mems at 400 Hz, seed ${SEED:-1}, double, preset foot)"
 printf '%-16s %8s %8s %8s %10s %9s\n' "misalign [deg]" "3D [m]" "horiz" "vert" "norm. err" "ZUPT NIS"
 for r in $VECTORS; do
@@ -32,9 +38,15 @@ for r in $VECTORS; do
     "$BIN/se23-ins" --preset foot --imu-rate 400 --lat 51.45 --nav-rate 400 \
         --in "file://$RUN/sim.log?speed=0" --out "file://$RUN/ins.log?mode=w" >"$RUN/summary.txt"
     nis=$(awk '$1 == "zupt_nis_mean" { print $2 }' "$RUN/summary.txt")
-    "$BIN/se23-walk" "$RUN/ins.log" >"$RUN/walk.txt"
+    "$BIN/se23-walk" --csv "$RUN/walk-$r.csv" "$RUN/ins.log" >"$RUN/walk.txt"
+    set -- "$@" "twin, accelerometer rotated by $r deg=$RUN/walk-$r.csv"
     awk -v r="$r" -v nis="$nis" '
         $1 == "closure" && $2 == "error" { c3 = $3; ch = $6; cv = $9 }
         /normalised closure error/ { for (i = 1; i <= NF; i++) if ($i == "error") ne = $(i + 1) }
         END { printf "%-16s %8s %8s %8s %10s %9s\n", r, c3, ch, cv, ne, nis }' "$RUN/walk.txt"
 done
+if "${PYTHON:-/usr/bin/python3}" tools/walk/plot_twin.py --out "$RUN/twin_heights.png" "$@"; then
+    echo "   plot: $RUN/twin_heights.png"
+else
+    echo "   plot: failed (needs ${PYTHON:-/usr/bin/python3} with matplotlib)"
+fi
