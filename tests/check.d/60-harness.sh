@@ -131,7 +131,15 @@ else
     skip harness-live-udpm-valgrind "no user namespaces here"
 fi
 
-# 6. Simulator options, read back from the log by tools/lcm/simcheck.c.
+# 6. The simulator's trajectories: every scenario's closed-form velocity,
+#    acceleration and body rate against central differences (step 1e-5 s,
+#    20,000 instants, within 1e-5); with a step of 0.05 s the differences'
+#    own error must fail the same bound (the walk's swings).
+h_sim_traj() {
+    "$HB/se23-sim" --check-traj 1e-5
+}
+check harness-sim-trajectories h_sim_traj
+#    Simulator options, read back from the log by tools/lcm/simcheck.c.
 #    A GNSS antenna at a lever arm, fixes 0.333 s late (not a whole number
 #    of IMU periods), noise-free: every fix is the truth moved by R l, its
 #    velocity by R (w_nb x l) (w_nb from the IMU sample: --imu perfect),
@@ -205,6 +213,10 @@ h_sim_misalign_can_fail() {
             "$HB/se23-simcheck" --accel-misalign $H_MIS "$HW/aligned.sim.log"
 }
 check harness-sim-accel-misalign-can-fail h_sim_misalign_can_fail
+h_sim_traj_can_fail() {
+    h_fails traj-coarse.txt "^TRAJ CHECK FAILED" "$HB/se23-sim" --check-traj 0.05
+}
+check harness-sim-trajectories-can-fail h_sim_traj_can_fail
 h_stationary_consistent() {
     h_run e2e-rest --scenario uav --duration 40 --seed 11 --stationary 10 -- --preint 1 &&
         "$HB/se23-report" --check "$HW/e2e-rest.sim.log" "$HW/e2e-rest.ins.log" &&

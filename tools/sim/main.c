@@ -62,6 +62,7 @@ typedef struct {
     int progress;
     int track;
     double accel_misalign[3]; /* accelerometer triad rotation vector [deg] */
+    double check_traj;        /* > 0: check the trajectories' derivatives, step [s] */
 } sim_opts_t;
 
 static void usage(FILE *f)
@@ -98,7 +99,12 @@ static void usage(FILE *f)
             "  --accel-misalign RX,RY,RZ       accelerometer triad rotated against the\n"
             "                                  gyroscope's by this rotation vector, body\n"
             "                                  frame, each within +-10 [deg] (0,0,0)\n"
-            "  --progress                      progress line on stderr\n");
+            "  --progress                      progress line on stderr\n"
+            "  --check-traj H                  publish nothing: check every scenario's\n"
+            "                                  closed-form v, a and body rate against\n"
+            "                                  central differences of step H [s] over its\n"
+            "                                  default duration; exit 1 if one is off by\n"
+            "                                  more than 1e-5\n");
 }
 
 static int find_scenario(const char *name)
@@ -131,6 +137,7 @@ static int parse_args(int argc, char **argv, sim_opts_t *o)
         {"--biases", HOPT_CHOICE, &o->biases, 0, 0, harness_on_off},
         {"--accel-misalign", HOPT_VEC3, o->accel_misalign, -10.0, 10.0, NULL},
         {"--progress", HOPT_FLAG, &o->progress, 1, 0, NULL},
+        {"--check-traj", HOPT_DOUBLE, &o->check_traj, 1e-9, 1.0, NULL},
     };
     o->scenario = TRAJ_UAV;
     o->duration = -1.0;
@@ -148,6 +155,7 @@ static int parse_args(int argc, char **argv, sim_opts_t *o)
     o->gnss_sv[2] = 0.2;
     memset(o->lever, 0, sizeof o->lever);
     memset(o->accel_misalign, 0, sizeof o->accel_misalign);
+    o->check_traj = 0.0;
     o->gnss_latency = 0.0;
     o->stationary = 0.0;
     o->truth_rate = 50.0;
@@ -394,6 +402,24 @@ static void progress(harness_progress_t *pr, int final, double t, double total)
     harness_progress(pr, final, "se23-sim: t = %7.1f / %.1f s", t, total);
 }
 
+/* --check-traj: the closed-form derivatives of every scenario against
+ * central differences (traj_check_derivatives), 20,000 instants each. */
+static int check_trajectories(double h)
+{
+    int s, ok = 1;
+    for (s = 0; s < TRAJ_COUNT; s++) {
+        ld_t worst[3];
+        traj_check_derivatives((traj_scenario_t)s, (ld_t)traj_default_duration((traj_scenario_t)s),
+                               20000, (ld_t)h, worst);
+        printf("%-7s max |v - dp/dt| %.2Le m/s, |a - dv/dt| %.2Le m/s^2, |w - vee(R^T dR/dt)| "
+               "%.2Le rad/s\n",
+               traj_name((traj_scenario_t)s), worst[0], worst[1], worst[2]);
+        ok = ok && worst[0] <= 1e-5L && worst[1] <= 1e-5L && worst[2] <= 1e-5L;
+    }
+    printf(ok ? "TRAJ CHECK PASSED\n" : "TRAJ CHECK FAILED\n");
+    return ok ? 0 : 1;
+}
+
 int main(int argc, char **argv)
 {
     sim_opts_t o;
@@ -412,6 +438,9 @@ int main(int argc, char **argv)
     if (parse_args(argc, argv, &o) != 0) {
         usage(stderr);
         return 2;
+    }
+    if (o.check_traj > 0.0) {
+        return check_trajectories(o.check_traj);
     }
     dt_ns = llround(1e9 / o.imu_rate);
     dt = (double)dt_ns * 1e-9;

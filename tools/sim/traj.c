@@ -306,3 +306,27 @@ traj_point_t traj_eval_start(traj_scenario_t s, ld_t rest, ld_t t)
     }
     return pt;
 }
+
+void traj_check_derivatives(traj_scenario_t s, ld_t duration, long n, ld_t h, ld_t out[3])
+{
+    long k;
+    int i, j;
+    out[0] = out[1] = out[2] = 0.0L;
+    for (k = 0; k < n; k++) {
+        /* off the scenarios' knots (whole and half seconds) */
+        const ld_t t = h + (duration - 2.0L * h) * ((ld_t)k + 0.3183L) / (ld_t)n;
+        const traj_point_t m = traj_eval(s, t - h), c = traj_eval(s, t), p = traj_eval(s, t + h);
+        ld_mat3_t dR, W;
+        for (i = 0; i < 3; i++) {
+            out[0] = fmaxl(out[0], fabsl(c.v.v[i] - (p.p.v[i] - m.p.v[i]) / (2.0L * h)));
+            out[1] = fmaxl(out[1], fabsl(c.a.v[i] - (p.v.v[i] - m.v.v[i]) / (2.0L * h)));
+            for (j = 0; j < 3; j++) {
+                dR.m[i][j] = (p.R.m[i][j] - m.R.m[i][j]) / (2.0L * h);
+            }
+        }
+        W = ld_mul_tn(&c.R, &dR); /* R^T dR/dt = w^ */
+        out[2] = fmaxl(out[2], fabsl(c.w_nb_b.v[0] - W.m[2][1]));
+        out[2] = fmaxl(out[2], fabsl(c.w_nb_b.v[1] - W.m[0][2]));
+        out[2] = fmaxl(out[2], fabsl(c.w_nb_b.v[2] - W.m[1][0]));
+    }
+}

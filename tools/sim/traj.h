@@ -67,4 +67,13 @@ double traj_ramp_duration(traj_scenario_t s);
  */
 traj_point_t traj_eval_start(traj_scenario_t s, ld_t rest, ld_t t);
 
+/**
+ * The largest difference, over n instants spread evenly over [0, duration],
+ * between scenario s's closed-form derivatives and central differences of
+ * step h [s] of the quantity they differentiate: |v - dp/dt|,
+ * |a - dv/dt| and |w_nb_b - vee(R^T dR/dt)| (out[0..2]); for se23-sim
+ * --check-traj.
+ */
+void traj_check_derivatives(traj_scenario_t s, ld_t duration, long n, ld_t h, ld_t out[3]);
+
 #endif /* SIM_TRAJ_H */
