@@ -176,6 +176,22 @@ static se23_real_t p_diag_max(const se23_gauss_t *g)
     return m;
 }
 
+/* P's upper triangle := its lower one, so that the state the filter keeps
+ * is exactly symmetric. A caller's covariance is accepted symmetric within
+ * a tolerance relative to its largest variance (gauss.h, "Validation"),
+ * and an update that shrinks that variance (a GNSS gate reset) would leave
+ * the asymmetry beyond it; the lower triangle is the one the check proved
+ * positive semidefinite. */
+static void mirror_lower(se23_gauss_t *g)
+{
+    int i, j;
+    for (i = 0; i < g->n; ++i) {
+        for (j = i + 1; j < g->n; ++j) {
+            g->P.m[se23_ins_idx(i, j)] = g->P.m[se23_ins_idx(j, i)];
+        }
+    }
+}
+
 se23_status_t se23_ins_init(se23_ins_t *ins, int64_t t_ns, const se23_gauss_t *g)
 {
     se23_status_t st;
@@ -204,6 +220,7 @@ se23_status_t se23_ins_init(se23_ins_t *ins, int64_t t_ns, const se23_gauss_t *g
         se23_ins_count(&ins->c.init_rejected);
         return st;
     }
+    mirror_lower(&ins->work);
     se23_ins_start(ins, t_ns, &ins->work);
     return SE23_OK;
 }

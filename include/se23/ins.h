@@ -420,7 +420,10 @@ se23_status_t se23_ins_setup(const se23_ins_config_t *cfg, se23_ins_t *ins);
 /**
  * (Re)initialises the state at time t_ns with the user's state g (R, v, p,
  * biases, covariance; g->n must be 15 with bias states, else 9), checked
- * here with se23_gauss_check: the one deep check it gets.
+ * here with se23_gauss_check: the one deep check it gets. The covariance
+ * kept is exactly symmetric: g's lower triangle, the one the check proves
+ * positive semidefinite, mirrored (the check accepts an asymmetry within
+ * its tolerance).
  * @return SE23_ERR_NULL, SE23_ERR_DIM (n), SE23_ERR_DT (t_ns < 0), the
  *         statuses of se23_gauss_check, SE23_ERR_DOMAIN (a variance above
  *         SE23_INS_P_MAX); on error the filter is unchanged but for

@@ -137,6 +137,34 @@ static void test_init_checks_the_state_once_and_counts_rejections(void **state)
     assert_true(out.T.p.v[0] == SE23_R(3));
 }
 
+/* Regression (fuzz_ins): a covariance is accepted symmetric within a
+ * tolerance relative to its largest variance; a GNSS gate reset that then
+ * shrank that variance left the kept asymmetry beyond it, and the state
+ * failed se23_gauss_check after SE23_INS_RESET. The filter keeps the lower
+ * triangle, the one the check proved positive semidefinite, in both. */
+static void test_init_keeps_an_exactly_symmetric_covariance(void **state)
+{
+    (void)state;
+    se23_ins_config_t c;
+    se23_gauss_t g, out;
+    int64_t t;
+    it_config(&c, 1);
+    assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
+    it_initial(15, 1e-3, 0.1, 1e3, &g); /* largest variance 1e6 */
+    g.P.m[1] = SE23_R(0.5) * (se23_real_t)SE23_CFG_COV_TOL * SE23_R(1e6); /* (0, 1) */
+    g.P.m[15 + 2] = SE23_R(1e-7);                                       /* (1, 2) */
+    g.P.m[15 * 2 + 1] = SE23_R(2e-7);                                   /* (2, 1) */
+    assert_int_equal(se23_gauss_check(&g), SE23_OK);
+    assert_int_equal(se23_ins_init(&ins, 0, &g), SE23_OK);
+    assert_int_equal(se23_ins_state(&ins, &out, &t), SE23_OK);
+    for (int i = 0; i < 15; ++i) {
+        for (int j = 0; j < i; ++j) {
+            assert_true(out.P.m[15 * i + j] == g.P.m[15 * i + j]);
+            assert_true(out.P.m[15 * j + i] == out.P.m[15 * i + j]);
+        }
+    }
+}
+
 /* ------------------------------------------------------------ screening */
 
 static void test_every_sample_ends_in_one_counter(void **state)
@@ -285,6 +313,7 @@ int main(void)
         cmocka_unit_test(test_ins_memory_is_as_documented),
         cmocka_unit_test(test_setup_rejects_each_bad_field_and_writes_nothing),
         cmocka_unit_test(test_init_checks_the_state_once_and_counts_rejections),
+        cmocka_unit_test(test_init_keeps_an_exactly_symmetric_covariance),
         cmocka_unit_test(test_every_sample_ends_in_one_counter),
         cmocka_unit_test(test_counters_saturate),
         cmocka_unit_test(test_every_fix_ends_in_one_counter),
