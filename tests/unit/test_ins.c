@@ -141,7 +141,7 @@ static void test_init_checks_the_state_once_and_counts_rejections(void **state)
  * tolerance relative to its largest variance; a GNSS gate reset that then
  * shrank that variance left the kept asymmetry beyond it, and the state
  * failed se23_gauss_check after SE23_INS_RESET. The filter keeps the lower
- * triangle, the one the check proved positive semidefinite, in both. */
+ * triangle, the one the check proved positive semidefinite, mirrored. */
 static void test_init_keeps_an_exactly_symmetric_covariance(void **state)
 {
     (void)state;
