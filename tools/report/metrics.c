@@ -38,24 +38,33 @@ double metrics_nees(const double *P, int stride, const double *e, int n)
     return (double)q;
 }
 
-/* sigma of each nav axis of Rhat P_blk Rhat^T, P_blk the 3x3 block at b. */
-static void nav_sigma(const ld_mat3_t *R, const double *P, int b, double out[3])
+void metrics_nav_cov(const double R_nb[9], const double *P, int b, double C[3][3])
 {
-    ld_mat3_t B, RB, C;
+    const ld_mat3_t R = ld_mat3_from(R_nb);
+    ld_mat3_t B, RB;
     int i, j;
     for (i = 0; i < 3; i++) {
         for (j = 0; j < 3; j++) {
             B.m[i][j] = P[15 * (b + i) + b + j];
         }
     }
-    RB = ld_mul(R, &B);
+    RB = ld_mul(&R, &B);
     for (i = 0; i < 3; i++) {
         for (j = 0; j < 3; j++) {
-            C.m[i][j] = RB.m[i][0] * R->m[j][0] + RB.m[i][1] * R->m[j][1] + RB.m[i][2] * R->m[j][2];
+            C[i][j] = (double)(RB.m[i][0] * R.m[j][0] + RB.m[i][1] * R.m[j][1] +
+                               RB.m[i][2] * R.m[j][2]);
         }
     }
+}
+
+/* sigma of each nav axis of Rhat P_blk Rhat^T, P_blk the 3x3 block at b. */
+static void nav_sigma(const double R_nb[9], const double *P, int b, double out[3])
+{
+    double C[3][3];
+    int i;
+    metrics_nav_cov(R_nb, P, b, C);
     for (i = 0; i < 3; i++) {
-        out[i] = C.m[i][i] > 0.0L ? (double)sqrtl(C.m[i][i]) : 0.0;
+        out[i] = C[i][i] > 0.0 ? sqrt(C[i][i]) : 0.0;
     }
 }
 
@@ -85,9 +94,9 @@ void metrics_epoch(const se23lcm_truth *tr, const se23lcm_nav_state *nav, epoch_
         e->sba[i] = sqrt(fmax(nav->P[15 * (12 + i) + 12 + i], 0.0));
         has_bias |= nav->P[15 * (9 + i) + 9 + i] > 0.0 || nav->P[15 * (12 + i) + 12 + i] > 0.0;
     }
-    nav_sigma(&Rh, nav->P, 0, e->sth);
-    nav_sigma(&Rh, nav->P, 3, e->sv);
-    nav_sigma(&Rh, nav->P, 6, e->sp);
+    nav_sigma(nav->R_nb, nav->P, 0, e->sth);
+    nav_sigma(nav->R_nb, nav->P, 3, e->sv);
+    nav_sigma(nav->R_nb, nav->P, 6, e->sp);
     /* exact xi = log(That^-1 T) */
     {
         ld_vec3_t dv = {{e->dv[0], e->dv[1], e->dv[2]}};

@@ -34,6 +34,11 @@ typedef struct {
  *  not positive definite. */
 double metrics_nees(const double *P, int stride, const double *e, int n);
 
+/** C = R P_blk R^T, the nav-frame covariance of the error block at b
+ *  (0 attitude, 3 velocity, 6 position) of the 15x15 P, R_nb row-major;
+ *  computed in long double. */
+void metrics_nav_cov(const double R_nb[9], const double *P, int b, double C[3][3]);
+
 /** Fills e from a truth and an estimate at the same time. */
 void metrics_epoch(const se23lcm_truth *tr, const se23lcm_nav_state *nav, epoch_t *e);
 

@@ -3,8 +3,6 @@
 
 #include <math.h>
 
-#include "../lcm/ldmath.h"
-
 static uint64_t splitmix64(uint64_t *x)
 {
     uint64_t z = (*x += 0x9e3779b97f4a7c15ULL);
@@ -76,16 +74,13 @@ void imu_err_init(imu_err_t *e, const harness_imu_profile_t *prof, uint64_t seed
     for (i = 0; i < 3; i++) {
         e->b_a[i] = prof->accel_bias0 * rng_normal(&e->rng);
     }
-    for (i = 0; i < 9; i++) {
-        e->accel_rot[i] = (i % 4 == 0) ? 1.0 : 0.0;
-    }
+    e->accel_rot = ld_identity();
 }
 
 void imu_err_misalign_accel(imu_err_t *e, const double rotvec[3])
 {
     const ld_vec3_t phi = ld_vec3_from(rotvec);
-    const ld_mat3_t M = ld_exp(&phi);
-    ld_mat3_to(&M, e->accel_rot);
+    e->accel_rot = ld_exp(&phi); /* exactly I for a zero rotation */
 }
 
 void imu_err_apply(imu_err_t *e, const double w_true[3], const double f_true[3], double dt,
@@ -95,12 +90,12 @@ void imu_err_apply(imu_err_t *e, const double w_true[3], const double f_true[3],
     double sa = e->prof.accel_noise / sqrt(dt);
     double rg = e->prof.gyro_bias_rw * sqrt(dt);
     double ra = e->prof.accel_bias_rw * sqrt(dt);
+    const ld_vec3_t f = ld_vec3_from(f_true);
+    const ld_vec3_t mf = ld_mul_v(&e->accel_rot, &f);
     int i;
     for (i = 0; i < 3; i++) {
-        const double *m = &e->accel_rot[3 * i];
-        const double mf = m[0] * f_true[0] + m[1] * f_true[1] + m[2] * f_true[2];
         w_meas[i] = w_true[i] - e->b_g[i] - sg * rng_normal(&e->rng);
-        f_meas[i] = mf - e->b_a[i] - sa * rng_normal(&e->rng);
+        f_meas[i] = (double)mf.v[i] - e->b_a[i] - sa * rng_normal(&e->rng);
     }
     for (i = 0; i < 3; i++) {
         e->b_g[i] += rg * rng_normal(&e->rng);

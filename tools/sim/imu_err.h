@@ -13,6 +13,7 @@
 #include <stdint.h>
 
 #include "../lcm/harness.h"
+#include "../lcm/ldmath.h"
 
 /** xoshiro256** generator with a cached Gaussian. */
 typedef struct {
@@ -30,7 +31,7 @@ typedef struct {
     rng_t rng;
     double b_g[3]; /**< current gyro bias [rad/s] */
     double b_a[3]; /**< current accel bias [m/s^2] */
-    double accel_rot[9]; /**< M of the accelerometer, row-major */
+    ld_mat3_t accel_rot; /**< M of the accelerometer */
 } imu_err_t;
 
 /** Draws the constant biases from the profile with the given seed. */

@@ -477,8 +477,7 @@ int main(int argc, char **argv)
             prof.accel_bias_rw = 0.0;
         }
         imu_err_init(&err, &prof, (uint64_t)o.seed);
-        if (o.accel_misalign[0] != 0.0 || o.accel_misalign[1] != 0.0 ||
-            o.accel_misalign[2] != 0.0) { /* else M = I exactly */
+        {
             double rv[3];
             accel_misalign_rad(&o, rv);
             imu_err_misalign_accel(&err, rv);

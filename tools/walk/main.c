@@ -85,23 +85,6 @@ static double speed_sigma(const se23lcm_nav_state *m)
     return sqrt(s > 0.0 ? s : 0.0);
 }
 
-/* C = R P_rhorho R^T, the covariance of the position in the nav frame (P
- * is of the body-frame error: p = pbar + R rho). */
-static void position_cov(const se23lcm_nav_state *m, double C[3][3])
-{
-    int i, j, k, l;
-    for (i = 0; i < 3; i++) {
-        for (j = 0; j < 3; j++) {
-            C[i][j] = 0.0;
-            for (k = 0; k < 3; k++) {
-                for (l = 0; l < 3; l++) {
-                    C[i][j] += m->R_nb[3 * i + k] * m->P[15 * (6 + k) + 6 + l] * m->R_nb[3 * j + l];
-                }
-            }
-        }
-    }
-}
-
 static void write_csv(const char *path, const log_data_t *d)
 {
     FILE *f = fopen(path, "w");
@@ -116,7 +99,7 @@ static void write_csv(const char *path, const log_data_t *d)
         const double sp = sqrt(m->v_n[0] * m->v_n[0] + m->v_n[1] * m->v_n[1] +
                                m->v_n[2] * m->v_n[2]);
         double C[3][3];
-        position_cov(m, C);
+        metrics_nav_cov(m->R_nb, m->P, 6, C); /* position, nav frame */
         fprintf(f, "%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6g,%.6g,%.6g,%.6g,%d\n",
                 (double)(m->t_ns - d->nav[0].t_ns) * 1e-9, m->p_n[0], m->p_n[1], m->p_n[2],
                 m->v_n[0], m->v_n[1], m->v_n[2], sp, speed_sigma(m), sqrt(C[0][0]), sqrt(C[1][1]),
@@ -198,7 +181,7 @@ int main(int argc, char **argv)
     }
     h = sqrt(e[0] * e[0] + e[1] * e[1]);
     v = fabs(e[2]);
-    position_cov(&d.nav[last_start], C);
+    metrics_nav_cov(d.nav[last_start].R_nb, d.nav[last_start].P, 6, C);
     nis = metrics_nees(&C[0][0], 3, e, 3);
     printf("se23-walk: %s\n", pos[0]);
     printf("  walk               %.1f s, %zu nav states\n",
