@@ -154,21 +154,34 @@ static se23_real_t variance_bound(int n, const se23_real_t *P, int stride)
     return d;
 }
 
-int se23_cov_step_fits(const se23_pose_t *U, se23_real_t dt, se23_real_t b,
-                       const se23_step_noise_t *q, int n, const se23_real_t *P,
-                       int stride)
+/* se23_cov_fits, inlined into both callers of the per-sample path. */
+static int fits(se23_real_t g, se23_real_t b, const se23_step_noise_t *q, int n,
+                const se23_real_t *P, int stride)
 {
     const se23_real_t d = variance_bound(n, P, stride);
-    /* Row sums: G's at most 1 + dt + |v|_1 + |p|_1, [G, Bt]'s that plus b,
-     * R^T's at most sqrt(3) < 2; q at most the larger density. */
-    const se23_real_t g = SE23_R(1) + dt + se23_fabs(U->v.v[0]) + se23_fabs(U->v.v[1]) +
-                          se23_fabs(U->v.v[2]) + se23_fabs(U->p.v[0]) +
-                          se23_fabs(U->p.v[1]) + se23_fabs(U->p.v[2]);
+    /* Row sums: the shear's at most g, [G, Bt]'s that plus b, R^T's at
+     * most sqrt(3) < 2; q at most the larger density. */
     const se23_real_t r = SE23_R(2) * (g + b) + SE23_R(1);
     const se23_real_t qm = (q->qg > q->qa) ? q->qg : q->qa;
     const se23_real_t w = (q->wg > q->wa) ? q->wg : q->wa;
     const se23_real_t bound = SE23_R(2) * d * r * r + SE23_R(4) * qm * b * b + w;
     return bound <= SE23_COV_STEP_MAX;
+}
+
+int se23_cov_fits(se23_real_t g, se23_real_t b, const se23_step_noise_t *q, int n,
+                  const se23_real_t *P, int stride)
+{
+    return fits(g, b, q, n, P, stride);
+}
+
+int se23_cov_step_fits(const se23_pose_t *U, se23_real_t dt, se23_real_t b,
+                       const se23_step_noise_t *q, int n, const se23_real_t *P,
+                       int stride)
+{
+    const se23_real_t g = SE23_R(1) + dt + se23_fabs(U->v.v[0]) + se23_fabs(U->v.v[1]) +
+                          se23_fabs(U->v.v[2]) + se23_fabs(U->p.v[0]) +
+                          se23_fabs(U->p.v[1]) + se23_fabs(U->p.v[2]);
+    return fits(g, b, q, n, P, stride);
 }
 
 se23_status_t se23_step_noise(const se23_imu_noise_t *nz, se23_real_t dt,

@@ -62,6 +62,11 @@ int se23_cov_step_fits(const se23_pose_t *U, se23_real_t dt, se23_real_t b,
                        const se23_step_noise_t *q, int n, const se23_real_t *P,
                        int stride);
 
+/** se23_cov_step_fits for a transition whose shear rows sum to at most g
+ *  (G's 1 + dt + |v|_1 + |p|_1, or the time shear's 1 + dt). */
+int se23_cov_fits(se23_real_t g, se23_real_t b, const se23_step_noise_t *q, int n,
+                  const se23_real_t *P, int stride);
+
 /**
  * Nonzero if every entry of Bt, built by se23_input_blocks from the parts
  * of a corrected sample, is finite; tame = se23_sample_tame of that
@@ -147,11 +152,36 @@ int se23_cov_nu_shear_fits(const se23_vec3_t *a, int n, const se23_real_t *P, in
 void se23_cov_nu_shear(const se23_vec3_t *a, int n, const se23_real_t *P,
                        se23_real_t *out, int stride);
 
-/** J <- F_k J + B_k = D (G J + Bt) in place (9x6, the bias Jacobian
- *  recursion of paper eq. biascor); generated straight-line code
- *  (cov_step_kernel.c). No checks. */
-void se23_cov_jac_step(const se23_pose_t *U, se23_real_t dt,
-                       const se23_input_blocks_t *Bt, se23_mat9x6_t *J);
+/*
+ * The left form of a preintegrated factor (preint_unc.h): the error
+ * zeta = Ad_Delta xi of Delta_true = exp(zeta) Delta, frame of t_i. With
+ * Delta+ = Phi_dt(Delta) U and Phi_dt(exp(zeta)) = exp(F zeta) (Phi_dt the
+ * time shear (R, v, p) -> (R, v, p + dt v), an automorphism),
+ *   zeta+ = F zeta + Ad_{Delta+} B_k n,   F = [[I, 0, 0], [0, I, 0], [0, dt I, I]],
+ * and Ad_{Delta+} D = [[R, 0, 0], [v+^ R, R, 0], [p+^ R, 0, R]] with R the
+ * rotation of Delta before the step (R+ R_U^T = R): F is constant and
+ * sparse, and the rotation moves from the covariance (R^T S R, two-sided)
+ * to the input matrix (one-sided).
+ */
+
+/** Bt <- Bl = Ad_{Delta+} D Bt in place: R the rotation of Delta before
+ *  the step, v and p the velocity and position of Delta after it.
+ *  blk[0][1] stays zero and unread. No checks. */
+void se23_input_blocks_left(const se23_mat3_t *R, const se23_vec3_t *v, const se23_vec3_t *p,
+                            se23_input_blocks_t *Bt);
+
+/** Q <- F Q F^T + Bl N Bl^T in place (9x9, row stride 9, upper triangle
+ *  read, both written: exactly symmetric), Bt holding Bl: the covariance
+ *  step of the left form. No checks. */
+void se23_cov_left_step(se23_real_t dt, const se23_input_blocks_t *Bt,
+                        const se23_step_noise_t *q, se23_real_t *Q);
+
+/** J <- F J + Bl in place (9x6), Bt holding Bl: the bias-Jacobian step of
+ *  the left form. No checks.
+ *  The three are generated straight-line code (cov_step_kernel.c): per
+ *  sample 469 multiplies and 423 adds, against 1,044 and 981 for the
+ *  right form's D (G P G^T + Bt N Bt^T) D^T and D (G J + Bt). */
+void se23_cov_left_jac_step(se23_real_t dt, const se23_input_blocks_t *Bt, se23_mat9x6_t *J);
 
 /**
  * Bt of one sample from the parts of its exact increment U (kind EXACT or

@@ -37,10 +37,10 @@ static se23_status_t reset(const se23_vec3_t *b_g, const se23_vec3_t *b_a,
     fu->kind = kind;
     fu->classic = classic;
     for (int i = 0; i < 81; ++i) {
-        fu->P.m[i] = SE23_R(0);
+        fu->P_left.m[i] = SE23_R(0);
     }
     for (int i = 0; i < 54; ++i) {
-        fu->J.m[i] = SE23_R(0);
+        fu->J_left.m[i] = SE23_R(0);
     }
     fu->cl.dR_dbg = zero3;
     fu->cl.dV_dbg = zero3;
@@ -74,7 +74,7 @@ se23_status_t se23_preint_unc_check(const se23_preint_unc_t *fu)
     }
     const se23_preint_classic_t *c = &fu->cl;
     if (!se23_all_finite(fu->b_g.v, 3) || !se23_all_finite(fu->b_a.v, 3) ||
-        !se23_all_finite(fu->J.m, 54) || !se23_all_finite(&c->dR_dbg.m[0][0], 9) ||
+        !se23_all_finite(fu->J_left.m, 54) || !se23_all_finite(&c->dR_dbg.m[0][0], 9) ||
         !se23_all_finite(&c->dV_dbg.m[0][0], 9) ||
         !se23_all_finite(&c->dV_dba.m[0][0], 9) ||
         !se23_all_finite(&c->dX_dbg.m[0][0], 9) ||
@@ -88,7 +88,7 @@ se23_status_t se23_preint_unc_check(const se23_preint_unc_t *fu)
     if (fu->f.dt < SE23_R(0)) {
         return SE23_ERR_DT;
     }
-    return se23_cov_check(fu->P.m, 9, 9);
+    return se23_cov_check(fu->P_left.m, 9, 9);
 }
 
 /* The sum of |x_i| of n reals (n a multiple of 3), a bound on each
@@ -103,27 +103,31 @@ static se23_real_t sum_abs(const se23_real_t *x, int n)
     return m;
 }
 
+/* |v|_1 + |p|_1 of a pose: the bound of its shear's row sums, less 1. */
+static se23_real_t translation_sum(const se23_pose_t *T)
+{
+    return sum_abs(T->v.v, 3) + sum_abs(T->p.v, 3);
+}
+
 /*
- * Nonzero if J+, the classical Jacobians and the Deltas of one step stay
+ * Nonzero if the classical Jacobians and the Deltas of one step stay
  * below SE23_COV_STEP_MAX (partial results included), for the increment U, the
- * corrected force f, dt and b (se23_input_blocks_bound): an O(n) bound
- * decides before anything is stored, as se23_cov_step_fits does for P+.
- * Rows of rotations sum to at most sqrt 3 < 2, |Jr| <= 1 (taken as 2),
- * u = |U.v|_1 + |U.p|_1, f1 = |f|_1, entries of the factor at most mJ, mc,
- * md (J, classical, Deltas: the sums of the entries' magnitudes):
- *   J+ = D (G J + Bt):         2 ((1 + dt + u) mJ + b)
+ * corrected force f and dt: an O(n) bound decides before anything is
+ * stored, as se23_cov_fits does for P+. Rows of rotations sum to at most
+ * sqrt 3 < 2, |Jr| <= 1 (taken as 2), u = |U.v|_1 + |U.p|_1, f1 = |f|_1,
+ * entries of the factor at most mc, md (classical, Deltas: the sums of
+ * the entries' magnitudes):
  *   classical (preint_classic.c; Delta R f^ at most 2 f1, times dR/dbg
  *   at most 6 f1 mc): (mc + 1)(2 + dt + 6 f1 (1 + dt)) + 2 dt
  *   Deltas (Phi_dt(Delta) U):  md (1 + dt) + 2 u
  * (dt <= SE23_CFG_DT_MAX = 1). NaN fails.
  */
 static int rest_fits(const se23_preint_unc_t *fu, const se23_pose_t *U,
-                     const se23_vec3_t *f, se23_real_t dt, se23_real_t b)
+                     const se23_vec3_t *f, se23_real_t dt)
 {
-    const se23_real_t u = sum_abs(U->v.v, 3) + sum_abs(U->p.v, 3);
+    const se23_real_t u = translation_sum(U);
     const se23_real_t f1 = se23_fabs(f->v[0]) + se23_fabs(f->v[1]) + se23_fabs(f->v[2]);
-    const se23_real_t mJ = sum_abs(fu->J.m, 54);
-    const se23_real_t md = sum_abs(fu->f.delta.v.v, 3) + sum_abs(fu->f.delta.p.v, 3);
+    const se23_real_t md = translation_sum(&fu->f.delta);
     se23_real_t mc = SE23_R(0);
     if (fu->classic != 0) {
         const se23_preint_classic_t *c = &fu->cl;
@@ -131,11 +135,27 @@ static int rest_fits(const se23_preint_unc_t *fu, const se23_pose_t *U,
              sum_abs(&c->dV_dba.m[0][0], 9) + sum_abs(&c->dX_dbg.m[0][0], 9) +
              sum_abs(&c->dX_dba.m[0][0], 9);
     }
-    const se23_real_t jb = SE23_R(2) * (((SE23_R(1) + dt + u) * mJ) + b);
     const se23_real_t cb = ((mc + SE23_R(1)) * (SE23_R(2) + dt + (SE23_R(6) * f1 * (SE23_R(1) + dt)))) +
                            (SE23_R(2) * dt);
     const se23_real_t db = (md * (SE23_R(1) + dt)) + (SE23_R(2) * u);
-    return (jb <= SE23_COV_STEP_MAX) && (cb <= SE23_COV_STEP_MAX) && (db <= SE23_COV_STEP_MAX);
+    return (cb <= SE23_COV_STEP_MAX) && (db <= SE23_COV_STEP_MAX);
+}
+
+/*
+ * Nonzero if the left-form step (cov_left.c) stays below
+ * SE23_COV_STEP_MAX, from next = the Deltas after it and b
+ * (se23_input_blocks_bound): the rows of Bl = Ad_{Delta+} D Bt sum to at
+ * most bl = 2 b (1 + |v+|_1 + |p+|_1) (rotation rows below 2, a skew row
+ * below the 1-norm), F's to 1 + dt; P_left+ by se23_cov_fits, and
+ * J_left+ = F J_left + Bl at most (1 + dt) mJ + bl, mJ the sum of |J_left|.
+ */
+static int left_step_fits(const se23_preint_unc_t *fu, const se23_pose_t *next,
+                          se23_real_t dt, se23_real_t b, const se23_step_noise_t *q)
+{
+    const se23_real_t bl = SE23_R(2) * b * (SE23_R(1) + translation_sum(next));
+    const se23_real_t jb = ((SE23_R(1) + dt) * sum_abs(fu->J_left.m, 54)) + bl;
+    return (jb <= SE23_COV_STEP_MAX) &&
+           se23_cov_fits(SE23_R(1) + dt, bl, q, SE23_GAUSS_N_POSE, fu->P_left.m, 9);
 }
 
 se23_status_t se23_preint_unc_add_work(se23_preint_unc_t *fu,
@@ -170,24 +190,52 @@ se23_status_t se23_preint_unc_add_work(se23_preint_unc_t *fu,
         return SE23_ERR_NONFINITE; /* finite reading + bias overflowed */
     }
     se23_sample_inputs(fu->kind, c, U, &in->Bt);
-    const se23_real_t b = se23_input_blocks_bound(&c->f_b, c->dt);
     if ((tame == 0 && !se23_pose_finite(U)) || !se23_input_blocks_finite(&in->Bt, tame) ||
-        !se23_cov_step_fits(U, c->dt, b, &in->q, SE23_GAUSS_N_POSE, fu->P.m, 9)) {
-        return SE23_ERR_NONFINITE; /* the increment, B_k or P+ would overflow */
+        !rest_fits(fu, U, &c->f_b, c->dt)) {
+        return SE23_ERR_NONFINITE; /* the increment, B_k, the Deltas or the
+                                    * classical Jacobians would overflow */
     }
-    /* J+, the classical Jacobians and the Deltas can overflow too (a force
-     * near the largest real without noise, P = 0, passes the bound on P+). */
-    if (!rest_fits(fu, U, &c->f_b, c->dt, b)) {
+    se23_preint_t next = fu->f;
+    se23_preint_add_increment(&next, U, c->dt);
+    if (!left_step_fits(fu, &next.delta, c->dt, se23_input_blocks_bound(&c->f_b, c->dt),
+                        &in->q)) {
         return SE23_ERR_NONFINITE;
     }
     /* Nothing below can fail: update in place. */
-    se23_cov_step(U, c->dt, &in->Bt, &in->q, SE23_GAUSS_N_POSE, fu->P.m, fu->P.m, 9);
-    se23_cov_jac_step(U, c->dt, &in->Bt, &fu->J);
+    se23_input_blocks_left(&fu->f.delta.R, &next.delta.v, &next.delta.p, &in->Bt);
+    se23_cov_left_step(c->dt, &in->Bt, &in->q, fu->P_left.m);
+    se23_cov_left_jac_step(c->dt, &in->Bt, &fu->J_left);
     if (fu->classic != 0) {
         se23_preint_classic_step(&fu->cl, &fu->f.delta.R, &U->R, &c->w_ib_b,
                                  &c->f_b, c->dt);
     }
-    se23_preint_add_increment(&fu->f, U, c->dt);
+    fu->f = next;
+    return SE23_OK;
+}
+
+se23_status_t se23_preint_unc_cov(const se23_preint_unc_t *fu, se23_mat9_t *P,
+                                  se23_mat9x6_t *J)
+{
+    SE23_CHECK_NOT_NULL(P);
+    se23_status_t st = se23_preint_unc_check(fu);
+    if (st != SE23_OK) {
+        return st;
+    }
+    /* Ad_{Delta^-1} = D G with U = Delta, dt = 0 (cov_step.h): the step's
+     * kernels with no input and no noise. */
+    const se23_pose_t *D = &fu->f.delta;
+    static const se23_step_noise_t none = {SE23_R(0), SE23_R(0), SE23_R(0), SE23_R(0)};
+    static const se23_input_blocks_t zero = {{{{{{SE23_R(0)}}}}}};
+    const se23_real_t jb = SE23_R(2) * (SE23_R(1) + translation_sum(D)) * sum_abs(fu->J_left.m, 54);
+    if (!se23_cov_step_fits(D, SE23_R(0), SE23_R(0), &none, SE23_GAUSS_N_POSE, fu->P_left.m, 9) ||
+        !(jb <= SE23_COV_STEP_MAX)) {
+        return SE23_ERR_NONFINITE;
+    }
+    /* Nothing below can fail (out may alias the input in both). */
+    se23_cov_step(D, SE23_R(0), &zero, &none, SE23_GAUSS_N_POSE, fu->P_left.m, P->m, 9);
+    if (J != NULL) {
+        se23_gauss_fk_mul(D, SE23_R(0), &fu->J_left, J);
+    }
     return SE23_OK;
 }
 
@@ -199,7 +247,8 @@ se23_status_t se23_preint_unc_add(se23_preint_unc_t *fu,
     return se23_preint_unc_add_work(fu, s, noise, &w);
 }
 
-/* d = J db, the discrepancy of paper eq. bias:discrep to first order. */
+/* d = J db, the discrepancy of paper eq. bias:discrep to first order (of
+ * the left form with J_left). */
 static void bias_discrepancy(const se23_mat9x6_t *J, const se23_vec3_t *dbg,
                              const se23_vec3_t *dba, se23_tangent_t *d)
 {
@@ -245,12 +294,12 @@ static se23_status_t correct(const se23_preint_unc_t *fu,
     } else {
         se23_tangent_t d;
         se23_pose_t E;
-        bias_discrepancy(&fu->J, &dbg, &dba, &d);
+        bias_discrepancy(&fu->J_left, &dbg, &dba, &d);
         st = se23_exp(&d, &E); /* NONFINITE if J db overflowed */
         if (st != SE23_OK) {
             return st;
         }
-        se23_compose(&fu->f.delta, &E, &r.delta);
+        se23_compose(&E, &fu->f.delta, &r.delta); /* exp(J_left db) Delta */
     }
     /* Finite Deltas, Jacobians and biases can still overflow: b - bbar,
      * J db, Delta V + dV/db db. */

@@ -36,6 +36,16 @@
  * Bias correction without re-integration:
  *   Delta(bhat) ~ Delta(bbar) exp(J (bhat - bbar)).
  *
+ * Storage: the left form. The factor keeps P and J as the left error's,
+ *   Delta_true = exp(zeta) Delta, zeta = Ad_Delta xi ~ N(0, P_left),
+ *   Delta(bbar + db) = exp(J_left db + O(db^2)) Delta(bbar),
+ * P_left = Ad_Delta P Ad_Delta^T, J_left = Ad_Delta J. Their recursion
+ * (cov_step.h, "The left form") has the constant sparse transition
+ *   F = [[I, 0, 0], [0, I, 0], [0, dt I, I]]
+ * and moves the rotation by R^T from the covariance to the input matrix:
+ * half the arithmetic of the right form per sample. se23_preint_unc_cov
+ * returns the paper's P and J, once per factor.
+ *
  * Classical first-order correction (Forster et al., IEEE T-RO 2017: the
  * first-order bias update of the preintegrated measurements and the
  * incremental Jacobians of its appendix), with this library's sign of the
@@ -58,6 +68,7 @@
  *   se23_preint_unc_add             one raw sample: Deltas, P, J (, classical)
  *   se23_preint_unc_add_work        the same, with the caller's work area (work.h)
  *   se23_preint_unc_check           validate a factor
+ *   se23_preint_unc_cov             P and J of the paper's (right) form
  *   se23_preint_unc_correct         Delta(bbar) exp(J db), paper eq. biascor
  *   se23_preint_unc_correct_classic Forster et al.'s first-order correction
  *
@@ -97,15 +108,18 @@ typedef struct {
     se23_vec3_t b_a;            /**< accel bias estimate bbar_a [m/s^2] (added to f_meas) */
     se23_input_jac_kind_t kind; /**< input matrix of J and of the noise */
     int classic;                /**< nonzero: cl is accumulated (se23_preint_unc_reset_classic) */
-    se23_mat9_t P;              /**< covariance of xi, Delta_true = Delta exp(xi) */
-    se23_mat9x6_t J;            /**< bias Jacobian: d = J db [s] */
+    se23_mat9_t P_left;         /**< covariance of zeta, Delta_true = exp(zeta) Delta
+                                 *   (file comment; se23_preint_unc_cov for P) */
+    se23_mat9x6_t J_left;       /**< bias Jacobian of the left form [s]
+                                 *   (se23_preint_unc_cov for J) */
     se23_preint_classic_t cl;   /**< classical Jacobians, for comparison (zero unless classic) */
 } se23_preint_unc_t;
 
 /**
  * fu = the empty factor at the bias estimate (b_g, b_a): Deltas (I, 0, 0),
- * Delta t = 0, P = 0, J = 0 (J_0 = 0, DESIGN.md), classical Jacobians 0 and
- * not accumulated (se23_preint_unc_reset_classic for those). A factor
+ * Delta t = 0, P = 0, J = 0 (J_0 = 0, DESIGN.md; their left forms too),
+ * classical Jacobians 0 and not accumulated
+ * (se23_preint_unc_reset_classic for those). A factor
  * starts valid here and stays valid through se23_preint_unc_add, which
  * does not re-check it (types.h, "Validation policy").
  * @param b_g  gyro bias estimate [rad/s]
@@ -134,9 +148,10 @@ se23_status_t se23_preint_unc_reset_classic(const se23_vec3_t *b_g,
  * Adds one raw sample s (sensor readings; corrected with the factor's bias
  * estimate): the Deltas by se23_preint_add_increment with the exact
  * increment of the corrected sample; P+ = F_k P F_k^T + B_k N B_k^T
- * (paper eq. riccati, gauss.h noise model, bias walks unused); J+ = F_k J +
- * B_k (paper eq. biascor), both by the block kernels of gauss.h's
- * factored F_k; the classical Jacobians if the factor was reset with
+ * (paper eq. riccati, gauss.h noise model, bias walks unused) and J+ =
+ * F_k J + B_k (paper eq. biascor), in the left form (file comment):
+ * P_left+ = F P_left F^T + Bl N Bl^T, J_left+ = F J_left + Bl,
+ * Bl = Ad_{Delta+} B_k; the classical Jacobians if the factor was reset with
  * se23_preint_unc_reset_classic (file comment). The sample and the noise
  * are checked; the factor is trusted (it comes from reset and add), and
  * re-checked with se23_preint_unc_check only if SE23_CFG_DEEP_CHECKS.
@@ -170,7 +185,7 @@ se23_status_t se23_preint_unc_add_work(se23_preint_unc_t *fu,
  * Checks a factor (the deep check, for callers who want it): kind known,
  * classic 0 or 1, biases, J and the classical Jacobians
  * finite, Deltas an extended pose (finite, Delta R in SO(3)), Delta t finite
- * and >= 0, P a valid covariance (gauss.h, "Validation").
+ * and >= 0, P_left a valid covariance (gauss.h, "Validation").
  * @return SE23_OK, SE23_ERR_DOMAIN, SE23_ERR_NONFINITE,
  *         SE23_ERR_NOT_ROTATION, SE23_ERR_DT, SE23_ERR_NOT_SYMMETRIC or
  *         SE23_ERR_NOT_PSD.
@@ -178,10 +193,26 @@ se23_status_t se23_preint_unc_add_work(se23_preint_unc_t *fu,
 se23_status_t se23_preint_unc_check(const se23_preint_unc_t *fu);
 
 /**
+ * P and J of the paper's form (file comment) from the factor's left form:
+ * P = Ad_{Delta^-1} P_left Ad_{Delta^-1}^T, J = Ad_{Delta^-1} J_left, by
+ * the covariance kernels of gauss.h (F_k with U = Delta, dt = 0). The
+ * factor is checked (se23_preint_unc_check) first.
+ * @param P the covariance of xi, Delta_true = Delta exp(xi) (exactly
+ *          symmetric)
+ * @param J the bias Jacobian: d = J db [s]; NULL if not wanted
+ * @return the statuses of se23_preint_unc_check, SE23_ERR_NONFINITE (P or J
+ *         would overflow: Deltas near the largest real); P and J are written
+ *         only on SE23_OK.
+ */
+se23_status_t se23_preint_unc_cov(const se23_preint_unc_t *fu, se23_mat9_t *P,
+                                  se23_mat9x6_t *J);
+
+/**
  * out = the factor corrected to the new bias estimate bhat = (b_g, b_a)
  * without re-integration, in exponential coordinates (paper eq.
  * bias:discrep, eq. biascor):
- *   out.delta = fu.f.delta exp(J (bhat - bbar)),
+ *   out.delta = fu.f.delta exp(J (bhat - bbar))
+ *             = exp(J_left (bhat - bbar)) fu.f.delta,
  * out.dt and out.n copied. Error O(|bhat - bbar|^2).
  * @param b_g new gyro bias estimate [rad/s]
  * @param b_a new accel bias estimate [m/s^2]

@@ -4,8 +4,10 @@
  * se23_preint_unc_check: "starts valid"), samples added (on SE23_OK the
  * factor still passes se23_preint_unc_check: "stays valid"; on an error it
  * is unchanged), the corrections (on SE23_OK finite Deltas, Delta R in
- * SO(3), dt and n copied; on an error the sentinel untouched), and the
- * check and corrections of a factor decoded raw (they check what they read).
+ * SO(3), dt and n copied; on an error the sentinel untouched), the paper's
+ * form (se23_preint_unc_cov: on SE23_OK finite and exactly symmetric, on
+ * an error untouched), and the check, corrections and paper's form of a
+ * factor decoded raw (they check what they read).
  */
 #include "fuzz.h"
 
@@ -72,6 +74,62 @@ static void one_correct(fz_t *f, const se23_preint_unc_t *fu)
     }
 }
 
+static void one_cov(const se23_preint_unc_t *fu)
+{
+    se23_mat9_t P;
+    se23_mat9x6_t J;
+    int i, j;
+    fz_fill(&P, sizeof P);
+    fz_fill(&J, sizeof J);
+    const se23_status_t st = se23_preint_unc_cov(fu, &P, &J);
+    FZ_REQUIRE(fz_status_in(st, 6, SE23_ERR_DOMAIN, SE23_ERR_NONFINITE, SE23_ERR_NOT_ROTATION,
+                            SE23_ERR_DT, SE23_ERR_NOT_SYMMETRIC, SE23_ERR_NOT_PSD),
+               "cov: %d", st);
+    if (st != SE23_OK) {
+        FZ_REQUIRE(fz_untouched(&P, sizeof P) && fz_untouched(&J, sizeof J),
+                   "cov wrote on error %d", st);
+        return;
+    }
+    FZ_REQUIRE(FZ_FINITE_OBJ(P) && FZ_FINITE_OBJ(J), "cov: OK with a non-finite P or J");
+    for (i = 0; i < 9; ++i) {
+        for (j = 0; j < i; ++j) {
+            FZ_REQUIRE(P.m[9 * i + j] == P.m[9 * j + i], "cov: P not exactly symmetric");
+        }
+    }
+}
+
+/* fz_step_bound of the left-form step (preint_unc.h): F the time shear
+ * (rows summing to 1 + dt), Bl = Ad_{Delta+} D Bt with rows summing to at
+ * most 2 b (1 + |v+|_1 + |p+|_1), b those of B = D Bt (twice: a rotation's
+ * rows sum to below 2), Delta+ = after the sample. */
+static double left_bound(const se23_imu_sample_t *s, const se23_preint_unc_t *after,
+                         const se23_imu_noise_t *q, const se23_real_t *P_before)
+{
+    se23_pose_t U0;
+    const se23_pose_t *D = &after->f.delta;
+    const double big = fz_sample_bound(s, &after->b_g, &after->b_a, after->kind, q, 0, P_before,
+                                       9, 9); /* HUGE_VAL if the sample is refused */
+    se23_imu_sample_t c = *s;
+    se23_mat9x6_t B;
+    double t = 1.0, qm;
+    int i;
+    if (!isfinite(big)) {
+        return big;
+    }
+    for (i = 0; i < 3; ++i) {
+        c.w_ib_b.v[i] = s->w_ib_b.v[i] + after->b_g.v[i];
+        c.f_b.v[i] = s->f_b.v[i] + after->b_a.v[i];
+        t += fabs((double)D->v.v[i]) + fabs((double)D->p.v[i]);
+    }
+    if (se23_gauss_input_jac(after->kind, &c.w_ib_b, &c.f_b, c.dt, &B) != SE23_OK) {
+        return HUGE_VAL;
+    }
+    se23_identity(&U0);
+    qm = fmax((double)q->gyro_noise * q->gyro_noise, (double)q->accel_noise * q->accel_noise) /
+         (double)c.dt;
+    return fz_step_bound(&U0, (double)c.dt, 4.0 * fz_rowsum9x6(&B) * t, qm, 0.0, P_before, 9, 9);
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
@@ -96,15 +154,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         fz_vec3(&f, &fu.b_a);
         fu.kind = (se23_input_jac_kind_t)fz_int(&f);
         fu.classic = fz_int(&f);
-        fz_cov(&f, 9, 9, fu.P.m);
+        fz_cov(&f, 9, 9, fu.P_left.m);
         for (i = 0; i < 54; ++i) {
-            fu.J.m[i] = fz_u8(&f) < 192 ? 0 : fz_real(&f);
+            fu.J_left.m[i] = fz_u8(&f) < 192 ? 0 : fz_real(&f);
         }
         st = se23_preint_unc_check(&fu);
         FZ_REQUIRE(fz_status_in(st, 6, SE23_ERR_DOMAIN, SE23_ERR_NONFINITE, SE23_ERR_NOT_ROTATION,
                                 SE23_ERR_DT, SE23_ERR_NOT_SYMMETRIC, SE23_ERR_NOT_PSD),
                    "check: %d", st);
         one_correct(&f, &fu);
+        one_cov(&fu);
         return 0;
     }
     bias_of(&f, &b_g, &b_a);
@@ -145,13 +204,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         }
         FZ_REQUIRE(fu.f.n == before.f.n + 1u, "add: n %u -> %u", (unsigned)before.f.n,
                    (unsigned)fu.f.n);
-        if (!fz_check_cov_result(se23_preint_unc_check(&fu), fu.P.m, 9, 9,
-                                 fz_sample_bound(&s, &fu.b_g, &fu.b_a, fu.kind, &q, 0, before.P.m,
-                                                 9, 9),
-                                 "add")) {
+        if (!fz_check_cov_result(se23_preint_unc_check(&fu), fu.P_left.m, 9, 9,
+                                 left_bound(&s, &fu, &q, before.P_left.m), "add")) {
             return 0; /* the known finding: not a factor to go on with */
         }
     }
     one_correct(&f, &fu);
+    one_cov(&fu);
     return 0;
 }

@@ -4,6 +4,7 @@
  * (tools/target/gen_ins_replay.c, gen_walk_replay.c, which write the
  * references); and the copy of the filter's mean-acceleration rest test.
  */
+#include <math.h>
 #include <string.h>
 
 #include "ins_replay.h"
@@ -33,7 +34,13 @@ static void put_factor(const se23_ins_factor_t *f, insr_factor_t *o)
         o->dX[i] = f->f.f.delta.p.v[i];
     }
     o->dt = f->f.f.dt;
-    diag(f->f.P.m, 9, 9, 9, o->P);
+    static se23_mat9_t P; /* the paper's form: large, static */
+    if (se23_preint_unc_cov(&f->f, &P, NULL) != SE23_OK) {
+        for (i = 0; i < 81; ++i) {
+            P.m[i] = (se23_real_t)NAN; /* fails the comparison */
+        }
+    }
+    diag(P.m, 9, 9, 9, o->P);
 }
 
 /* got = the filter's outputs now (but `at`, `factors` and `fac`). */

@@ -33,7 +33,7 @@
     (1 + SE23_MEAS_MMAX + SE23_MEAS_MMAX * SE23_GAUSS_NMAX + SE23_MEAS_MMAX * SE23_MEAS_MMAX)
 
 /** Reals of a se23_preint_unc_t in a row: f (TV_PREINT_REALS), b_g, b_a,
- *  kind, P (9 x 9), J (9 x 6), the five classical 3 x 3 Jacobians. */
+ *  kind, P_left (9 x 9), J_left (9 x 6), the five classical 3 x 3 Jacobians. */
 #define TV_PREINT_UNC_REALS (TV_PREINT_REALS + 3 + 3 + 1 + 1 + 81 + 54 + 5 * 9)
 
 /** Literals of the generated tables. */

@@ -240,7 +240,7 @@ int tv_call_se23_preint_predict_carried(void)
 void tv_store_se23_preint_predict_carried(se23_real_t *out) { give(&out, &p.out, sizeof p.out); }
 
 /* ---- preint_unc.h: se23_preint_unc_t travels as TV_PREINT_UNC_REALS reals
- * (f, b_g, b_a, kind, P, J, classical Jacobians) -------------------------- */
+ * (f, b_g, b_a, kind, P_left, J_left, classical Jacobians) -------------------------- */
 
 #define KIND_SENTINEL ((se23_input_jac_kind_t)-7)
 #define CLASSIC_SENTINEL (-7)
@@ -252,6 +252,8 @@ static struct {
     se23_vec3_t b_g, b_a;
     se23_input_jac_kind_t kind;
     se23_preint_t out;
+    se23_mat9_t P;
+    se23_mat9x6_t J;
 } u;
 
 static void take_unc(const se23_real_t **in, se23_preint_unc_t *fu)
@@ -261,8 +263,8 @@ static void take_unc(const se23_real_t **in, se23_preint_unc_t *fu)
     take(in, &fu->b_a, sizeof fu->b_a);
     fu->kind = (se23_input_jac_kind_t)(int)take1(in);
     fu->classic = (int)take1(in);
-    take(in, &fu->P, sizeof fu->P);
-    take(in, &fu->J, sizeof fu->J);
+    take(in, &fu->P_left, sizeof fu->P_left);
+    take(in, &fu->J_left, sizeof fu->J_left);
     take(in, &fu->cl, sizeof fu->cl);
 }
 static void give_unc(se23_real_t *out, const se23_preint_unc_t *fu)
@@ -273,8 +275,8 @@ static void give_unc(se23_real_t *out, const se23_preint_unc_t *fu)
     give(&out, &fu->b_a, sizeof fu->b_a);
     *out++ = fu->kind == KIND_SENTINEL ? TV_SENTINEL : (se23_real_t)fu->kind;
     *out++ = fu->classic == CLASSIC_SENTINEL ? TV_SENTINEL : (se23_real_t)fu->classic;
-    give(&out, &fu->P, sizeof fu->P);
-    give(&out, &fu->J, sizeof fu->J);
+    give(&out, &fu->P_left, sizeof fu->P_left);
+    give(&out, &fu->J_left, sizeof fu->J_left);
     give(&out, &fu->cl, sizeof fu->cl);
 }
 static void fill_unc(se23_preint_unc_t *fu)
@@ -284,8 +286,8 @@ static void fill_unc(se23_preint_unc_t *fu)
     tv_fill_sentinel(&fu->b_a, sizeof fu->b_a);
     fu->kind = KIND_SENTINEL;
     fu->classic = CLASSIC_SENTINEL;
-    tv_fill_sentinel(&fu->P, sizeof fu->P);
-    tv_fill_sentinel(&fu->J, sizeof fu->J);
+    tv_fill_sentinel(&fu->P_left, sizeof fu->P_left);
+    tv_fill_sentinel(&fu->J_left, sizeof fu->J_left);
     tv_fill_sentinel(&fu->cl, sizeof fu->cl);
 }
 
@@ -357,6 +359,19 @@ int tv_call_se23_preint_unc_correct_classic(void)
     return (int)se23_preint_unc_correct_classic(&u.fu, &u.b_g, &u.b_a, &u.out);
 }
 void tv_store_se23_preint_unc_correct_classic(se23_real_t *out) { give_preint(out, &u.out); }
+
+void tv_load_se23_preint_unc_cov(const se23_real_t *in)
+{
+    take_unc(&in, &u.fu);
+    tv_fill_sentinel(&u.P, sizeof u.P);
+    tv_fill_sentinel(&u.J, sizeof u.J);
+}
+int tv_call_se23_preint_unc_cov(void) { return (int)se23_preint_unc_cov(&u.fu, &u.P, &u.J); }
+void tv_store_se23_preint_unc_cov(se23_real_t *out)
+{
+    give(&out, &u.P, sizeof u.P);
+    give(&out, &u.J, sizeof u.J);
+}
 
 /* ---- stationary.h: a row holds the configuration (window as a real), k and
  * TV_ST_SAMPLES samples (w, f); the j-th add uses sample j mod TV_ST_SAMPLES.

@@ -141,6 +141,7 @@ TV_CUSTOM(se23_preint_unc_add,
 TV_CUSTOM(se23_preint_unc_check, TV_PREINT_UNC_REALS, 0, 0)
 TV_CUSTOM(se23_preint_unc_correct, TV_PREINT_UNC_REALS + 6, TV_PREINT_REALS, 16)
 TV_CUSTOM(se23_preint_unc_correct_classic, TV_PREINT_UNC_REALS + 6, TV_PREINT_REALS, 16)
+TV_CUSTOM(se23_preint_unc_cov, TV_PREINT_UNC_REALS, 81 + 54, 16)
 
 /* stationary.h (se23_stationary_t travels as its configuration, window
  * first as a real, then k and TV_ST_SAMPLES samples (w, f); load runs init

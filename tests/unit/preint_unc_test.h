@@ -92,6 +92,19 @@ static inline void make_factor(int n, se23_input_jac_kind_t kind,
     }
 }
 
+/* P and J of fu in the paper's form (se23_preint_unc_cov). */
+typedef struct {
+    se23_mat9_t P;
+    se23_mat9x6_t J;
+} paper_form_t;
+
+static inline paper_form_t paper_form(const se23_preint_unc_t *fu)
+{
+    paper_form_t out;
+    assert_int_equal(se23_preint_unc_cov(fu, &out.P, &out.J), SE23_OK);
+    return out;
+}
+
 /* D = the double re-integration of n samples of corrected inputs
  * motion + e (Phi_dt then the increment, preint.h); exact increments, or
  * Euler ones (exp(w dt), dt f, dt^2 f / 2) when euler. */

@@ -110,7 +110,7 @@ static void test_preint_unc_reset_gives_empty_factor(void **state)
     assert_memory_equal(&fu.b_a, &ba, sizeof ba);
     assert_int_equal(fu.kind, SE23_INPUT_JAC_BASIC);
     assert_int_equal(fu.classic, 0);
-    const se23_real_t *blocks[3] = {fu.P.m, fu.J.m, &fu.cl.dR_dbg.m[0][0]};
+    const se23_real_t *blocks[3] = {fu.P_left.m, fu.J_left.m, &fu.cl.dR_dbg.m[0][0]};
     const int sizes[3] = {81, 54, 9};
     for (int b = 0; b < 3; ++b) {
         for (int i = 0; i < sizes[b]; ++i) {
@@ -189,8 +189,8 @@ static void test_preint_unc_classic_is_opt_in(void **state)
     assert_int_equal(with.classic, 1);
     assert_int_equal(without.classic, 0);
     assert_memory_equal(&with.f, &without.f, sizeof with.f);
-    assert_memory_equal(&with.P, &without.P, sizeof with.P);
-    assert_memory_equal(&with.J, &without.J, sizeof with.J);
+    assert_memory_equal(&with.P_left, &without.P_left, sizeof with.P_left);
+    assert_memory_equal(&with.J_left, &without.J_left, sizeof with.J_left);
     const se23_real_t *cl = &without.cl.dR_dbg.m[0][0];
     for (size_t i = 0; i < sizeof without.cl / sizeof *cl; ++i) {
         assert_true(cl[i] == SE23_R(0));
@@ -269,12 +269,13 @@ static void test_preint_unc_bias_jacobian_matches_central_differences(void **sta
     se23_preint_unc_t ex, ba;
     make_factor(N, SE23_INPUT_JAC_EXACT, &QUIET, &ex);
     make_factor(N, SE23_INPUT_JAC_BASIC, &QUIET, &ba);
+    const paper_form_t pf_ex = paper_form(&ex), pf_ba = paper_form(&ba);
     double worst_ex = 0, worst_ba = 0;
     for (int j = 0; j < 6; ++j) {
         double col[9];
         fd_column(N, j, col);
-        worst_ex = fmax(worst_ex, column_error(&ex.J, j, col));
-        worst_ba = fmax(worst_ba, column_error(&ba.J, j, col));
+        worst_ex = fmax(worst_ex, column_error(&pf_ex.J, j, col));
+        worst_ba = fmax(worst_ba, column_error(&pf_ba.J, j, col));
     }
     print_message("J vs central differences: exact %.2e, basic %.2e (relative)\n",
                   worst_ex, worst_ba);
@@ -315,10 +316,11 @@ static void test_preint_unc_cov_matches_step_by_step_propagation(void **state)
         }
         se23_mat9_t F;
         se23_gauss_fk(&fu.f.delta, fu.f.dt, &F);
+        const paper_form_t pf = paper_form(&fu);
         double err = 0, scale = 0;
         for (int i = 0; i < 9; ++i) {
             for (int j = 0; j < 9; ++j) {
-                double s = (double)fu.P.m[9 * i + j];
+                double s = (double)pf.P.m[9 * i + j];
                 for (int a = 0; a < 9; ++a) {
                     for (int b = 0; b < 9; ++b) {
                         s += (double)F.m[9 * i + a] * Si[9 * a + b] * (double)F.m[9 * j + b];
@@ -343,8 +345,9 @@ static void test_preint_unc_cov_matches_step_by_step_propagation(void **state)
 static double mc_mean_nees(const se23_preint_unc_t *fu, double scale)
 {
     double P[81], L[81];
+    const paper_form_t pf = paper_form(fu);
     for (int i = 0; i < 81; ++i) {
-        P[i] = scale * (double)fu->P.m[i];
+        P[i] = scale * (double)pf.P.m[i];
     }
     assert_true(gt_chol(P, 9, L));
     se23t_rng_t rng;
@@ -655,13 +658,22 @@ static void expect_rejected(void (*plant)(se23_preint_unc_t *), se23_status_t ex
     assert_int_equal(se23_preint_unc_correct(&fu, &fu.b_g, &fu.b_a, &out), expect);
     assert_int_equal(se23_preint_unc_correct_classic(&fu, &fu.b_g, &fu.b_a, &out), expect);
     assert_memory_equal(&out, &out0, sizeof out);
+    se23_mat9_t P, P0;
+    se23_mat9x6_t J, J0;
+    memset(&P, SENTINEL, sizeof P);
+    memset(&J, SENTINEL, sizeof J);
+    P0 = P;
+    J0 = J;
+    assert_int_equal(se23_preint_unc_cov(&fu, &P, &J), expect);
+    assert_memory_equal(&P, &P0, sizeof P);
+    assert_memory_equal(&J, &J0, sizeof J);
     assert_factor_same(&fu, &saved);
 }
 
-static void plant_not_psd(se23_preint_unc_t *fu) { fu->P.m[9 * 4 + 4] = SE23_R(-1); }
-static void plant_not_symmetric(se23_preint_unc_t *fu) { fu->P.m[9 * 0 + 5] += SE23_R(0.5); }
-static void plant_nan_p(se23_preint_unc_t *fu) { fu->P.m[9 * 8 + 8] = (se23_real_t)NAN; }
-static void plant_nan_j(se23_preint_unc_t *fu) { fu->J.m[17] = (se23_real_t)NAN; }
+static void plant_not_psd(se23_preint_unc_t *fu) { fu->P_left.m[9 * 4 + 4] = SE23_R(-1); }
+static void plant_not_symmetric(se23_preint_unc_t *fu) { fu->P_left.m[9 * 0 + 5] += SE23_R(0.5); }
+static void plant_nan_p(se23_preint_unc_t *fu) { fu->P_left.m[9 * 8 + 8] = (se23_real_t)NAN; }
+static void plant_nan_j(se23_preint_unc_t *fu) { fu->J_left.m[17] = (se23_real_t)NAN; }
 static void plant_nan_classic(se23_preint_unc_t *fu) { fu->cl.dX_dba.m[2][1] = (se23_real_t)INFINITY; }
 static void plant_nan_bias(se23_preint_unc_t *fu) { fu->b_a.v[0] = (se23_real_t)NAN; }
 static void plant_nan_delta(se23_preint_unc_t *fu) { fu->f.delta.p.v[1] = (se23_real_t)NAN; }
@@ -686,6 +698,34 @@ static void test_preint_unc_corrupted_factor_is_rejected_untouched(void **state)
     expect_rejected(plant_nan_dt, SE23_ERR_NONFINITE);
     expect_rejected(plant_bad_kind, SE23_ERR_DOMAIN);
     expect_rejected(plant_bad_classic, SE23_ERR_DOMAIN);
+}
+
+/* se23_preint_unc_cov: J is optional and P the same without it; Deltas
+ * whose shear would overflow P (a valid factor: finite, in SO(3)) are
+ * refused, nothing written; P NULL is refused. */
+static void test_preint_unc_cov_outputs_and_refusals(void **state)
+{
+    (void)state;
+    se23_preint_unc_t fu;
+    make_factor(30, SE23_INPUT_JAC_EXACT, &NOISE, &fu);
+    const paper_form_t pf = paper_form(&fu);
+    se23_mat9_t P, P0;
+    memset(&P, SENTINEL, sizeof P);
+    assert_int_equal(se23_preint_unc_cov(&fu, &P, NULL), SE23_OK);
+    assert_memory_equal(&P, &pf.P, sizeof P);
+    for (int i = 0; i < 9; ++i) {
+        for (int j = 0; j < 9; ++j) {
+            assert_true(P.m[9 * i + j] == P.m[9 * j + i]);
+        }
+    }
+    assert_int_equal(se23_preint_unc_cov(&fu, NULL, NULL), SE23_ERR_NULL);
+    assert_int_equal(se23_preint_unc_cov(NULL, &P, NULL), SE23_ERR_NULL);
+    fu.f.delta.p.v[0] = (se23_real_t)(SE23T_REAL_MAX / 1e6);
+    assert_int_equal(se23_preint_unc_check(&fu), SE23_OK);
+    memset(&P, SENTINEL, sizeof P);
+    P0 = P;
+    assert_int_equal(se23_preint_unc_cov(&fu, &P, NULL), SE23_ERR_NONFINITE);
+    assert_memory_equal(&P, &P0, sizeof P);
 }
 
 static void test_preint_unc_correct_rejects_bad_bias_untouched(void **state)
@@ -770,6 +810,7 @@ int main(void)
         cmocka_unit_test(test_preint_unc_reset_rejects_bad_input_untouched),
         cmocka_unit_test(test_preint_unc_add_rejects_bad_sample_and_noise_untouched),
         cmocka_unit_test(test_preint_unc_corrupted_factor_is_rejected_untouched),
+        cmocka_unit_test(test_preint_unc_cov_outputs_and_refusals),
         cmocka_unit_test(test_preint_unc_correct_rejects_bad_bias_untouched),
         cmocka_unit_test(test_preint_unc_null_arguments_return_err_null),
     };

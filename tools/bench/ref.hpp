@@ -59,6 +59,9 @@ struct Increment {
 };
 Increment increment(const Vec3 &w, const Vec3 &f, Real dt);
 
+/* Ad_T = [[R, 0, 0], [v^ R, R, 0], [p^ R, 0, R]], dense. */
+Mat9 adjoint(const Mat5 &T);
+
 /* F_k = Ad_{U^-1} F, F(phi, nu, rho) = (phi, nu, rho + dt nu), dense. */
 Mat9 transition(const Mat5 &U, Real dt);
 

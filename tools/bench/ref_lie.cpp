@@ -126,6 +126,18 @@ Increment increment(const Vec3 &w, const Vec3 &f, Real dt)
     return inc;
 }
 
+Mat9 adjoint(const Mat5 &T)
+{
+    const Mat3 R = T.block<3, 3>(0, 0);
+    Mat9 Ad = Mat9::Zero();
+    for (int k = 0; k < 3; ++k) {
+        Ad.block<3, 3>(3 * k, 3 * k) = R;
+    }
+    Ad.block<3, 3>(3, 0) = hat(T.block<3, 1>(0, 3)) * R;
+    Ad.block<3, 3>(6, 0) = hat(T.block<3, 1>(0, 4)) * R;
+    return Ad;
+}
+
 Mat9 transition(const Mat5 &U, Real dt)
 {
     const Mat3 Rt = U.block<3, 3>(0, 0).transpose();

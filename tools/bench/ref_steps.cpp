@@ -81,12 +81,15 @@ extern "C" void ref_preint_add(const se23_preint_unc_t *fu, const se23_imu_sampl
 {
     const Real dt = s->dt;
     const Increment inc = increment(corrected(s->w_ib_b, fu->b_g), corrected(s->f_b, fu->b_a), dt);
-    const Mat9 F = transition(inc.U, dt);
-    const Mat9 P = ConstRowMap<9, 9>(fu->P.m);
-    RowMap<9, 9>(out->P.m) =
-        F * P * F.transpose() + inc.B * white_noise(*noise, dt).asDiagonal() * inc.B.transpose();
-    RowMap<9, 6>(out->J.m) = F * ConstRowMap<9, 6>(fu->J.m) + inc.B;
-    store_pose(shift(pose5(fu->f.delta), dt) * inc.U, out->f.delta);
+    // The left form (preint_unc.h): F the time shear, Bl = Ad_{Delta+} B_k.
+    const Mat5 next = shift(pose5(fu->f.delta), dt) * inc.U;
+    const Mat9 F = transition(Mat5::Identity(), dt);
+    const Mat96 Bl = adjoint(next) * inc.B;
+    const Mat9 P = ConstRowMap<9, 9>(fu->P_left.m);
+    RowMap<9, 9>(out->P_left.m) =
+        F * P * F.transpose() + Bl * white_noise(*noise, dt).asDiagonal() * Bl.transpose();
+    RowMap<9, 6>(out->J_left.m) = F * ConstRowMap<9, 6>(fu->J_left.m) + Bl;
+    store_pose(next, out->f.delta);
     out->f.dt = fu->f.dt + dt;
     out->f.n = fu->f.n + 1;
     out->b_g = fu->b_g;

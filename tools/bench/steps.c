@@ -123,10 +123,10 @@ static double factor_diff(int i)
         return INFINITY;
     }
     double d = fmax(pose_diff(&a->f.delta, &b->f.delta), block_diff(&a->f.dt, &b->f.dt, 1, 1, 1));
-    d = fmax(d, cov_diff(a->P.m, b->P.m, 9, 9));
+    d = fmax(d, cov_diff(a->P_left.m, b->P_left.m, 9, 9));
     for (int r = 0; r < 9; r += 3) { /* J by 3x3 blocks: their scales are dt to dt^3 */
         for (int c = 0; c < 6; c += 3) {
-            d = fmax(d, block_diff(&a->J.m[6 * r + c], &b->J.m[6 * r + c], 3, 3, 6));
+            d = fmax(d, block_diff(&a->J_left.m[6 * r + c], &b->J_left.m[6 * r + c], 3, 3, 6));
         }
     }
     return d;

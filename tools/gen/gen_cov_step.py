@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Writes src/cov_step_kernel.c, the per-sample covariance kernels of
 cov_step.h as straight-line code: the covariance step for 9 states and for
-15, and the bias-Jacobian step of a preintegrated factor.
+15, and the three steps of a preintegrated factor's left form (its input
+matrix, covariance and bias Jacobian).
 
   python3 tools/gen/gen_cov_step.py           write the file
   python3 tools/gen/gen_cov_step.py --check   exit 1 if it is not current
@@ -416,22 +417,70 @@ def rotate_kernel(g):
     g.finish()
 
 
-def jac_kernel(g):
-    """J <- F_k J + B_k = D (G J + Bt) in place (cov_step.h), J 9x6 of
-    stride 6: per accelerometer/gyro column block k, the rows of G J plus
-    Bt's blocks, each rotated by R^T."""
-    R = named("r")
-    Rt = tr(R)
-    Vm, Pm = skew("vel", -1), skew("pos", -1)
+def left_kernel(g):
+    """The left form (cov_step.h): P <- F P F^T + Bl N Bl^T in place, 9x9
+    of stride 9, Bt's locals standing for Bl. F = I but for its (rho, nu)
+    block dt I, so only the rho row and column shear:
+      (rho, rho) += dt (X_nu,rho + X_rho,nu) + dt^2 X_nu,nu,
+      (nu, rho) += dt X_nu,nu,  (phi, rho) += dt X_phi,nu."""
+    Bt = [[input_block(i, k) for k in range(2)] for i in range(3)]
+    qs = ["qg", "qa"]
+    qBtT = [[tr(g.scale(qs[k], Bt[j][k])) if Bt[j][k] is not None else None
+             for k in range(2)] for j in range(3)]
+    dtI = diag("dt")
+    g.lines.append("const se23_real_t dt2 = dt * dt;")
+    g.muls += 1
+
+    def X(i, j):
+        return g.p_block(3 * i, 3 * j) if i <= j else tr(g.p_block(3 * j, 3 * i))
+
+    shear = {(RHO, RHO): [(dtI, X(NU, RHO)), (dtI, X(RHO, NU)), (diag("dt2"), X(NU, NU))],
+             (NU, RHO): [(dtI, X(NU, NU))],
+             (PHI, RHO): [(dtI, X(PHI, NU))]}
+    # The in-place order: a block is stored after the blocks that read it.
+    for i, j in ((RHO, RHO), (NU, RHO), (NU, NU), (PHI, RHO), (PHI, NU), (PHI, PHI)):
+        pairs = [(Bt[i][k], qBtT[j][k]) for k in range(2)
+                 if Bt[i][k] is not None and Bt[j][k] is not None]
+        blk = g.lin(pairs + shear.get((i, j), []), base=X(i, j), sym=(i == j))
+        g.store_block(3 * i, 3 * j, blk, mirror=(i != j))
+    g.finish()
+
+
+def left_jac_kernel(g):
+    """The left form's J <- F J + Bl in place, J 9x6 of stride 6: the rho
+    rows gain dt times the nu rows, every block its Bl block."""
     dtI = diag("dt")
     for k in range(2):
-        J0, J1, J2 = g.m_block(0, 3 * k), g.m_block(3, 3 * k), g.m_block(6, 3 * k)
-        rows = [g.lin([], base=J0, extra=input_block(0, k)),
-                g.lin([(Vm, J0)], base=J1, extra=input_block(1, k)),
-                g.lin([(dtI, J1), (Pm, J0)], base=J2, extra=input_block(2, k))]
+        J1, J2 = g.m_block(3, 3 * k), g.m_block(6, 3 * k)
+        rows = [g.lin([], base=g.m_block(0, 3 * k), extra=input_block(PHI, k)),
+                g.lin([], base=J1, extra=input_block(NU, k)),
+                g.lin([(dtI, J1)], base=J2, extra=input_block(RHO, k))]
         for i in range(3):
-            g.store_block(3 * i, 3 * k, g.lin([(Rt, rows[i])]), mirror=False)
+            if input_block(i, k) is not None or i == RHO:
+                g.store_block(3 * i, 3 * k, rows[i], mirror=False)
     g.finish()
+
+
+def left_input_kernel(g):
+    """Bt <- Ad_{Delta+} D Bt in place (cov_step.h): R Bt's blocks, and the
+    gyro column's nu and rho blocks gain v^ and p^ times its phi block
+    R Bt_phi,g (the phi row has no accel block). Each block's values are
+    computed before any of its entries is stored, R Bt_phi,g's last."""
+    R = named("r")
+    RB0 = g.lin([(R, input_block(PHI, 0))])
+    for i, k in ((NU, 0), (NU, 1), (RHO, 0), (RHO, 1)):
+        pairs = [(R, input_block(i, k))]
+        if k == 0:
+            pairs.append((skew("vel" if i == NU else "pos", 1), RB0))
+        blk = g.lin(pairs)
+        vals = [[g.value(blk[a][b]) for b in range(3)] for a in range(3)]
+        for a in range(3):
+            for b in range(3):
+                g.lines.append("Bt->blk[%d][%d].m[%d][%d] = %s;" % (i, k, a, b, vals[a][b][1]))
+    vals = [[g.value(RB0[a][b]) for b in range(3)] for a in range(3)]
+    for a in range(3):
+        for b in range(3):
+            g.lines.append("Bt->blk[0][0].m[%d][%d] = %s;" % (a, b, vals[a][b][1]))
 
 
 def input_block(i, k):
@@ -439,16 +488,17 @@ def input_block(i, k):
     return None if (i == PHI and k == 1) else named("b%d%d_" % (i, k))
 
 
-def inputs():
-    """The reads of U, Bt, q and S, by the names of their entries: a local
-    declared at first use, or with Gen.reread the read itself at every use
-    (they cannot alias out, so their reads may follow stores)."""
+def inputs(rot="U->R.m", vel="U->v.v", pos="U->p.v"):
+    """The reads of U (or of the rotation, velocity and position named),
+    Bt, q and S, by the names of their entries: a local declared at first
+    use, or with Gen.reread the read itself at every use (they cannot
+    alias out, so their reads may follow stores)."""
     ins = {}
     for i in range(3):
         for j in range(3):
-            ins["r%d%d" % (i, j)] = "U->R.m[%d][%d]" % (i, j)
-        ins["vel%d" % i] = "U->v.v[%d]" % i
-        ins["pos%d" % i] = "U->p.v[%d]" % i
+            ins["r%d%d" % (i, j)] = "%s[%d][%d]" % (rot, i, j)
+        ins["vel%d" % i] = "%s[%d]" % (vel, i)
+        ins["pos%d" % i] = "%s[%d]" % (pos, i)
         for k in range(2):
             if i == PHI and k == 1:
                 continue
@@ -519,33 +569,52 @@ def function(mode):
     return doc + sig + "{\n" + "\n".join("    " + x for x in g.lines) + "\n}\n"
 
 
-def jac_function():
+def left_functions():
+    """se23_input_blocks_left, se23_cov_left_step, se23_cov_left_jac_step."""
+    out = []
+    g = Gen()
+    g.inputs = inputs(rot="R->m", vel="v->v", pos="p->v")
+    left_input_kernel(g)
+    out.append(("/* %d multiplies and %d adds. */\n"
+                "void se23_input_blocks_left(const se23_mat3_t *R, const se23_vec3_t *v, "
+                "const se23_vec3_t *p,\n"
+                "                            se23_input_blocks_t *Bt)\n" % (g.muls, g.adds), g))
+    probe = Gen(src="Q", dst="Q", stride=9)
+    probe.inputs = inputs()
+    left_kernel(probe)
+    g = Gen(used=probe.used, stored=probe.stored, src="Q", dst="Q", stride=9)
+    g.inputs = inputs()
+    left_kernel(g)
+    out.append(("/* %d multiplies and %d adds; reads %d entries of Q, stores %d. */\n"
+                "void se23_cov_left_step(se23_real_t dt, const se23_input_blocks_t *Bt,\n"
+                "                        const se23_step_noise_t *q, se23_real_t *Q)\n"
+                % (g.muls, g.adds, len(g.reads), g.stores), g))
     probe = Gen(src="J->m", dst="J->m", stride=6, prefix="j")
     probe.inputs = inputs()
-    jac_kernel(probe)
+    left_jac_kernel(probe)
     g = Gen(used=probe.used, src="J->m", dst="J->m", stride=6, prefix="j")
     g.inputs = inputs()
-    jac_kernel(g)
-    doc = ("/* %d multiplies and %d adds, %d reads of J, 54 stores. */\n"
-           % (g.muls, g.adds, len(g.reads)))
-    sig = ("void se23_cov_jac_step(const se23_pose_t *U, se23_real_t dt,\n"
-           "                       const se23_input_blocks_t *Bt, se23_mat9x6_t *J)\n")
-    return doc + sig + "{\n" + "\n".join("    " + x for x in g.lines) + "\n}\n"
+    left_jac_kernel(g)
+    out.append(("/* %d multiplies and %d adds, %d reads of J, %d stores. */\n"
+                "void se23_cov_left_jac_step(se23_real_t dt, const se23_input_blocks_t *Bt,\n"
+                "                            se23_mat9x6_t *J)\n"
+                % (g.muls, g.adds, len(g.reads), g.stores), g))
+    return ["%s{\n%s\n}\n" % (head, "\n".join("    " + x for x in g.lines)) for head, g in out]
 
 
 def source():
     parts = []
     for mode in ("noise9", "bias15g", "bias15a", "bias15w", "shear", "rotate"):
         parts.append(function(mode))
-    parts.append(jac_function())
+    parts.extend(left_functions())
     return ("/* Generated by tools/gen/gen_cov_step.py: do not edit; change the\n"
             " * generator and run it (make check fails while this file is stale).\n"
             " *\n"
             " * The per-sample kernels of cov_step.h as straight-line code: the\n"
             " * covariance step out = Phi P Phi^T + diag(B_k N B_k^T, W) (the block\n"
-            " * algorithm of cov_step.c's file comment) and the bias-Jacobian step\n"
-            " * J <- D (G J + Bt), every 3x3 product expanded and its structural\n"
-            " * zeros skipped. */\n"
+            " * algorithm of cov_step.c's file comment) and the steps of a\n"
+            " * preintegrated factor's left form (cov_step.h), every 3x3 product\n"
+            " * expanded and its structural zeros skipped. */\n"
             "#include \"cov_step.h\"\n\n" + "\n".join(parts))
 
 

@@ -323,11 +323,20 @@ static void publish_factor(node_t *nd, const se23_ins_factor_t *f)
         m.b_g_lin[i] = f->f.b_g.v[i];
         m.b_a_lin[i] = f->f.b_a.v[i];
     }
+    static se23_mat9_t P; /* the paper's form, preint_factor.lcm */
+    static se23_mat9x6_t J;
+    const se23_status_t st = se23_preint_unc_cov(&f->f, &P, &J);
+    if (st != SE23_OK) {
+        fprintf(stderr, "se23-ins: factor at t0 %lld ns not published (%s)
+",
+                (long long)f->t0_ns, se23_status_str(st));
+        return;
+    }
     for (i = 0; i < 81; i++) {
-        m.cov[i] = f->f.P.m[i];
+        m.cov[i] = P.m[i];
     }
     for (i = 0; i < 54; i++) {
-        m.J_bias[i] = f->f.J.m[i];
+        m.J_bias[i] = J.m[i];
     }
     se23lcm_preint_factor_publish(nd->out, HARNESS_CH_PREINT, &m);
 }

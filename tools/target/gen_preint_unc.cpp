@@ -1,12 +1,15 @@
 // Target vectors of preint_unc.h. Expected values from the definitions in
 // long double: Deltas by the augmented exponential (ref_nav.hpp), the
-// covariance and exponential-coordinate bias Jacobian as dense F_k P F_k^T +
-// B N B^T and F_k J + B_k (F_k = Ad_{Upsilon^-1} F; exact B_k by the Frechet
-// derivative of the augmented exponential, as in gen_gauss.cpp), the
-// classical Jacobians by the recursions of the header's file comment, and the
-// corrections Delta exp(J db) with the reference SE_2(3) exponential.
-// Row layout of se23_preint_unc_t: f (delta, dt, n), b_g, b_a, kind, P (9x9),
-// J (9x6), classical dR/dbg, dV/dbg, dV/dba, dX/dbg, dX/dba (3x3 each).
+// covariance and exponential-coordinate bias Jacobian of the paper's form
+// as dense F_k P F_k^T + B N B^T and F_k J + B_k (F_k = Ad_{Upsilon^-1} F;
+// exact B_k by the Frechet derivative of the augmented exponential, as in
+// gen_gauss.cpp), stored in the left form by its definition P_left =
+// Ad_Delta P Ad_Delta^T, J_left = Ad_Delta J; the classical Jacobians by the
+// recursions of the header's file comment, and the corrections
+// Delta exp(J db) with the reference SE_2(3) exponential.
+// Row layout of se23_preint_unc_t: f (delta, dt, n), b_g, b_a, kind,
+// P_left (9x9), J_left (9x6), classical dR/dbg, dV/dbg, dV/dba, dX/dbg,
+// dX/dba (3x3 each).
 #include "gen_common.hpp"
 #include "ref_nav.hpp"
 
@@ -26,10 +29,14 @@ struct Unc {
     LD dt, n;
     Vec3L bg, ba;
     LD kind, classic;
-    Mat9L P;
-    Mat96L J;
+    Mat9L P;  // the left form, P_left
+    Mat96L J; // J_left
     Mat3L cl[5]; // dR_dbg, dV_dbg, dV_dba, dX_dbg, dX_dba
 };
+// Ad_Delta^-1 = F_k with U = Delta, dt = 0: the paper's form of a left-form
+// P or J, and back.
+Mat9L ad_inv(const Mat5L &delta) { return gen_fk(delta, 0); }
+Mat9L ad(const Mat5L &delta) { return gen_fk(Mat5L(delta.inverse()), 0); }
 void put_unc(Row &r, const Unc &u)
 {
     put_pose(r, u.delta);
@@ -196,11 +203,15 @@ void add_preint_unc(Gens &g)
             cl[2] = u.cl[2] + DR * dt;
             cl[3] = u.cl[3] + u.cl[1] * dt - DR * fx * u.cl[0] * (dt * dt / 2);
             cl[4] = u.cl[4] + u.cl[2] * dt + DR * (dt * dt / 2);
+            const Mat9L Ai = ad_inv(u.delta);
+            const Mat9L P = Ai * u.P * Ai.transpose();
+            const Mat96L J = Ai * u.J;
             u.delta = phi_t(u.delta, dt) * U;
             u.dt += dt;
             u.n += 1;
-            u.P = F * u.P * F.transpose() + B * N * B.transpose();
-            u.J = F * u.J + B;
+            const Mat9L A = ad(u.delta);
+            u.P = A * (F * P * F.transpose() + B * N * B.transpose()) * A.transpose();
+            u.J = A * (F * J + B);
             if (u.classic != 0)
                 for (int i = 0; i < 5; ++i) u.cl[i] = cl[i];
             put_unc(out, u);
@@ -244,7 +255,8 @@ void add_preint_unc(Gens &g)
             if (!classic) {
                 Eigen::Matrix<LD, 6, 1> db;
                 db << dg, da;
-                put_preint(out, Mat5L(u.delta * se23_exp(Vec9L(u.J * db))), u.dt, u.n);
+                const Mat96L J = ad_inv(u.delta) * u.J;
+                put_preint(out, Mat5L(u.delta * se23_exp(Vec9L(J * db))), u.dt, u.n);
             } else {
                 const Mat3L R = u.delta.block<3, 3>(0, 0) * so3_exp(Vec3L(u.cl[0] * dg));
                 const Vec3L V = Vec3L(u.delta.block<3, 1>(0, 3)) + u.cl[1] * dg + u.cl[2] * da;
@@ -256,6 +268,26 @@ void add_preint_unc(Gens &g)
     };
     g["se23_preint_unc_correct"] = {kUncEdges + 1, correct_in, correct(false)};
     g["se23_preint_unc_correct_classic"] = {kUncEdges + 1, correct_in, correct(true)};
+    // The paper's form: the factor edges (the Deltas of unc_any are small:
+    // the shear cannot overflow).
+    g["se23_preint_unc_cov"] = {kUncEdges,
+                                [](Ctx &c, int k) {
+                                    Unc u = unc_any(c, k);
+                                    break_unc(u, k);
+                                    Row r;
+                                    put_unc(r, u);
+                                    return r;
+                                },
+                                [](const Ctx &c, const Row &in, Row &out) {
+                                    Rd rd{in};
+                                    const Unc u = read_unc(rd);
+                                    const int st = unc_status(u, c);
+                                    if (st != SE23_OK) return st;
+                                    const Mat9L Ai = ad_inv(u.delta);
+                                    put(out, Mat9L(Ai * u.P * Ai.transpose()));
+                                    put(out, Mat96L(Ai * u.J));
+                                    return int(SE23_OK);
+                                }};
     g["se23_preint_unc_reset"].scale = scale_unc();
     g["se23_preint_unc_reset_classic"].scale = scale_unc();
     // A reset factor is the identity with zero P and J whatever the biases:
@@ -265,6 +297,11 @@ void add_preint_unc(Gens &g)
     g["se23_preint_unc_add"].scale = scale_unc();
     g["se23_preint_unc_correct"].scale = scale_blocks({9, 3, 3, 1, 1});
     g["se23_preint_unc_correct_classic"].scale = scale_blocks({9, 3, 3, 1, 1});
+    // 425 reals a row: few random rows, as for reset (the conversion is
+    // the same dense products whatever the factor).
+    g["se23_preint_unc_cov"].n_random = 8;
+    g["se23_preint_unc_cov"].scale =
+        scale_concat({{81, scale_cov(9)}, {54, scale_mat_blocks(9, 6, 3)}});
 }
 
 } // namespace gen
