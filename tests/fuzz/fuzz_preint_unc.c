@@ -12,6 +12,7 @@
 #include "fuzz.h"
 
 #include "se23/preint_unc.h"
+#include "se23/se23.h"
 
 static void noise_of(fz_t *f, se23_imu_noise_t *q)
 {

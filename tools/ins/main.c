@@ -327,8 +327,7 @@ static void publish_factor(node_t *nd, const se23_ins_factor_t *f)
     static se23_mat9x6_t J;
     const se23_status_t st = se23_preint_unc_cov(&f->f, &P, &J);
     if (st != SE23_OK) {
-        fprintf(stderr, "se23-ins: factor at t0 %lld ns not published (%s)
-",
+        fprintf(stderr, "se23-ins: factor at t0 %lld ns not published (%s)\n",
                 (long long)f->t0_ns, se23_status_str(st));
         return;
     }
