@@ -316,7 +316,8 @@ typedef struct {
 
 /** A finished preintegrated factor. */
 typedef struct {
-    se23_preint_unc_t f;      /**< Deltas, covariance and bias Jacobian */
+    se23_preint_unc_t f;      /**< Deltas, covariance and bias Jacobian (left
+                               *   form: se23_preint_unc_cov gives P and J) */
     int64_t t0_ns, t1_ns;     /**< the window it spans [ns] */
     int64_t seq0;             /**< seq of the first sample received in it
                                *   (samples lost just before that one are in
