@@ -543,7 +543,6 @@ SIGNATURES = {
 
 def function(mode):
     def run(g):
-        g.inputs = inputs()
         if mode == "rotate":
             rotate_kernel(g)
         else:
@@ -553,10 +552,7 @@ def function(mode):
     # row stride SE23_GAUSS_NMAX: constant offsets (loads with an immediate,
     # no address arithmetic). The pose stages serve strides 9 and 15.
     stride = 15 if mode.startswith("bias15") else None
-    probe = Gen(reread=reread, stride=stride)
-    run(probe)
-    g = Gen(used=probe.used, stored=probe.stored, reread=reread, stride=stride)
-    run(g)
+    g = two_pass(run, reread=reread, stride=stride)
     name, what, params = SIGNATURES[mode]
     pad = " " * (len(name) + 6)
     io = ("; reads %d entries of P, stores %d" % (len(g.reads), g.stores)
@@ -569,6 +565,19 @@ def function(mode):
     return doc + sig + "{\n" + "\n".join("    " + x for x in g.lines) + "\n}\n"
 
 
+def two_pass(kernel, **kw):
+    """Runs kernel twice: a probe that records which entries of the source
+    are read and stored, then the emitting pass that knows them (loads
+    before the stores that replace them)."""
+    probe = Gen(**kw)
+    probe.inputs = inputs()
+    kernel(probe)
+    g = Gen(used=probe.used, stored=probe.stored, **kw)
+    g.inputs = inputs()
+    kernel(g)
+    return g
+
+
 def left_functions():
     """se23_input_blocks_left, se23_cov_left_step, se23_cov_left_jac_step."""
     out = []
@@ -579,22 +588,12 @@ def left_functions():
                 "void se23_input_blocks_left(const se23_mat3_t *R, const se23_vec3_t *v, "
                 "const se23_vec3_t *p,\n"
                 "                            se23_input_blocks_t *Bt)\n" % (g.muls, g.adds), g))
-    probe = Gen(src="Q", dst="Q", stride=9)
-    probe.inputs = inputs()
-    left_kernel(probe)
-    g = Gen(used=probe.used, stored=probe.stored, src="Q", dst="Q", stride=9)
-    g.inputs = inputs()
-    left_kernel(g)
+    g = two_pass(left_kernel, src="Q", dst="Q", stride=9)
     out.append(("/* %d multiplies and %d adds; reads %d entries of Q, stores %d. */\n"
                 "void se23_cov_left_step(se23_real_t dt, const se23_input_blocks_t *Bt,\n"
                 "                        const se23_step_noise_t *q, se23_real_t *Q)\n"
                 % (g.muls, g.adds, len(g.reads), g.stores), g))
-    probe = Gen(src="J->m", dst="J->m", stride=6, prefix="j")
-    probe.inputs = inputs()
-    left_jac_kernel(probe)
-    g = Gen(used=probe.used, src="J->m", dst="J->m", stride=6, prefix="j")
-    g.inputs = inputs()
-    left_jac_kernel(g)
+    g = two_pass(left_jac_kernel, src="J->m", dst="J->m", stride=6, prefix="j")
     out.append(("/* %d multiplies and %d adds, %d reads of J, %d stores. */\n"
                 "void se23_cov_left_jac_step(se23_real_t dt, const se23_input_blocks_t *Bt,\n"
                 "                            se23_mat9x6_t *J)\n"

@@ -217,14 +217,15 @@ void add_preint_unc(Gens &g)
             put_unc(out, u);
             return int(SE23_OK);
         }};
-    g["se23_preint_unc_check"] = {kUncEdges,
-                                  [](Ctx &c, int k) {
-                                      Unc u = unc_any(c, k);
-                                      break_unc(u, k);
-                                      Row r;
-                                      put_unc(r, u);
-                                      return r;
-                                  },
+    // A factor alone, with the factor edges.
+    const auto factor_in = [](Ctx &c, int k) {
+        Unc u = unc_any(c, k);
+        break_unc(u, k);
+        Row r;
+        put_unc(r, u);
+        return r;
+    };
+    g["se23_preint_unc_check"] = {kUncEdges, factor_in,
                                   [](const Ctx &c, const Row &in, Row &) {
                                       Rd rd{in};
                                       return unc_status(read_unc(rd), c);
@@ -270,14 +271,7 @@ void add_preint_unc(Gens &g)
     g["se23_preint_unc_correct_classic"] = {kUncEdges + 1, correct_in, correct(true)};
     // The paper's form: the factor edges (the Deltas of unc_any are small:
     // the shear cannot overflow).
-    g["se23_preint_unc_cov"] = {kUncEdges,
-                                [](Ctx &c, int k) {
-                                    Unc u = unc_any(c, k);
-                                    break_unc(u, k);
-                                    Row r;
-                                    put_unc(r, u);
-                                    return r;
-                                },
+    g["se23_preint_unc_cov"] = {kUncEdges, factor_in,
                                 [](const Ctx &c, const Row &in, Row &out) {
                                     Rd rd{in};
                                     const Unc u = read_unc(rd);
