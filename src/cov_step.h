@@ -179,7 +179,7 @@ void se23_cov_left_step(se23_real_t dt, const se23_input_blocks_t *Bt,
 /** J <- F J + Bl in place (9x6), Bt holding Bl: the bias-Jacobian step of
  *  the left form. No checks.
  *  The three are generated straight-line code (cov_step_kernel.c): per
- *  sample 469 multiplies and 423 adds, against 1,044 and 981 for the
+ *  sample 469 multiplies and 423 adds, against 1,008 and 855 for the
  *  right form's D (G P G^T + Bt N Bt^T) D^T and D (G J + Bt). */
 void se23_cov_left_jac_step(se23_real_t dt, const se23_input_blocks_t *Bt, se23_mat9x6_t *J);
 

@@ -18,9 +18,10 @@
  * (preint.h), so xi propagates like a state error (gauss.h):
  *   xi+ = F_k xi + B_k eta,  P+ = F_k P F_k^T + B_k N B_k^T,
  *   F_k = Ad_{Upsilon_k^-1} F,  P_0 = 0,
- * with se23_gauss_input_jac, se23_gauss_input_noise and
- * se23_gauss_cov_propagate: one implementation of F_k and B_k serves the
- * filter and the factor. A state distribution predicted through the factor
+ * the model of se23_gauss_input_jac, se23_gauss_input_noise and
+ * se23_gauss_cov_propagate (the same B_k and noise as the filter's; the
+ * factor evaluates the recursion in its left form, below). A state
+ * distribution predicted through the factor
  * is Sigma_j = F_D Sigma_i F_D^T + P with F_D = Ad_{Delta^-1} F_{Delta t}
  * (se23_gauss_fk_apply with U = Delta, dt = Delta t), the same as
  * propagating Sigma_i sample by sample.
