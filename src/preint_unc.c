@@ -142,7 +142,7 @@ static int rest_fits(const se23_preint_unc_t *fu, const se23_pose_t *U,
 }
 
 /*
- * Nonzero if the left-form step (cov_left.c) stays below
+ * Nonzero if the left-form step (cov_step.h, "The left form") stays below
  * SE23_COV_STEP_MAX, from next = the Deltas after it and b
  * (se23_input_blocks_bound): the rows of Bl = Ad_{Delta+} D Bt sum to at
  * most bl = 2 b (1 + |v+|_1 + |p+|_1) (rotation rows below 2, a skew row
@@ -231,7 +231,7 @@ se23_status_t se23_preint_unc_cov(const se23_preint_unc_t *fu, se23_mat9_t *P,
         !(jb <= SE23_COV_STEP_MAX)) {
         return SE23_ERR_NONFINITE;
     }
-    /* Nothing below can fail (out may alias the input in both). */
+    /* Nothing below can fail. */
     se23_cov_step(D, SE23_R(0), &zero, &none, SE23_GAUSS_N_POSE, fu->P_left.m, P->m, 9);
     if (J != NULL) {
         se23_gauss_fk_mul(D, SE23_R(0), &fu->J_left, J);
