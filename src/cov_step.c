@@ -222,6 +222,14 @@ void se23_cov_step(const se23_pose_t *U, se23_real_t dt,
     se23_cov_rotate_pose(U, &S, out, stride);
 }
 
+void se23_cov_fk_congruence(const se23_pose_t *U, se23_real_t dt, const se23_real_t *P,
+                            se23_real_t *out, int stride)
+{
+    se23_cov_pose_t S = {{SE23_R(0)}};
+    se23_cov_shear_pose(U, dt, P, stride, &S);
+    se23_cov_rotate_pose(U, &S, out, stride);
+}
+
 /* Block (a, b) of a symmetric P from its upper triangle. */
 static void blk_load_sym(const se23_real_t *P, int stride, int a, int b,
                          se23_mat3_t *A)

@@ -106,6 +106,12 @@ void se23_cov_step(const se23_pose_t *U, se23_real_t dt,
                    const se23_input_blocks_t *Bt, const se23_step_noise_t *q,
                    int n, const se23_real_t *P, se23_real_t *out, int stride);
 
+/** out = F_k P F_k^T = D G P G^T D^T on the pose blocks (9x9, no input,
+ *  no noise): se23_cov_step's shear and rotation stages from a zero
+ *  scratch. out may alias P. No checks. */
+void se23_cov_fk_congruence(const se23_pose_t *U, se23_real_t dt, const se23_real_t *P,
+                            se23_real_t *out, int stride);
+
 /** The pose blocks (i, j), i <= j, of S = G X G^T + E before the rotation,
  *  packed: the blocks in the order (0,0), (0,1), (0,2), (1,1), (1,2),
  *  (2,2), a diagonal block as its upper triangle by rows (6 entries), the

@@ -110,20 +110,24 @@ static se23_real_t translation_sum(const se23_pose_t *T)
 }
 
 /*
- * Nonzero if the classical Jacobians and the Deltas of one step stay
- * below SE23_COV_STEP_MAX (partial results included), for the increment U, the
- * corrected force f and dt: an O(n) bound decides before anything is
- * stored, as se23_cov_fits does for P+. Rows of rotations sum to at most
- * sqrt 3 < 2, |Jr| <= 1 (taken as 2), u = |U.v|_1 + |U.p|_1, f1 = |f|_1,
- * entries of the factor at most mc, md (classical, Deltas: the sums of
- * the entries' magnitudes):
+ * Nonzero if every result of one step stays below SE23_COV_STEP_MAX
+ * (partial results included), for the increment U, the corrected force f,
+ * dt, b (se23_input_blocks_bound) and the noise q: an O(n) bound decides
+ * before anything is stored. Rows of rotations sum to at most sqrt 3 < 2,
+ * |Jr| <= 1 (taken as 2), a skew row to at most the vector's 1-norm;
+ * u = |U.v|_1 + |U.p|_1, f1 = |f|_1, entries of the factor at most mc, md,
+ * mJ (classical, Deltas, J_left: the sums of the entries' magnitudes):
  *   classical (preint_classic.c; Delta R f^ at most 2 f1, times dR/dbg
  *   at most 6 f1 mc): (mc + 1)(2 + dt + 6 f1 (1 + dt)) + 2 dt
- *   Deltas (Phi_dt(Delta) U):  md (1 + dt) + 2 u
+ *   Deltas (Phi_dt(Delta) U): d = md (1 + dt) + 2 u, which also bounds
+ *   |v+|_1 + |p+|_1, so the rows of Bl = Ad_{Delta+} D Bt (cov_step.h,
+ *   "The left form") sum to at most bl = 2 b (1 + d)
+ *   J_left+ = F J_left + Bl: (1 + dt) mJ + bl
+ *   P_left+ = F P_left F^T + Bl N Bl^T: se23_cov_fits, F's rows 1 + dt
  * (dt <= SE23_CFG_DT_MAX = 1). NaN fails.
  */
-static int rest_fits(const se23_preint_unc_t *fu, const se23_pose_t *U,
-                     const se23_vec3_t *f, se23_real_t dt)
+static int step_fits(const se23_preint_unc_t *fu, const se23_pose_t *U, const se23_vec3_t *f,
+                     se23_real_t dt, se23_real_t b, const se23_step_noise_t *q)
 {
     const se23_real_t u = translation_sum(U);
     const se23_real_t f1 = se23_fabs(f->v[0]) + se23_fabs(f->v[1]) + se23_fabs(f->v[2]);
@@ -137,24 +141,11 @@ static int rest_fits(const se23_preint_unc_t *fu, const se23_pose_t *U,
     }
     const se23_real_t cb = ((mc + SE23_R(1)) * (SE23_R(2) + dt + (SE23_R(6) * f1 * (SE23_R(1) + dt)))) +
                            (SE23_R(2) * dt);
-    const se23_real_t db = (md * (SE23_R(1) + dt)) + (SE23_R(2) * u);
-    return (cb <= SE23_COV_STEP_MAX) && (db <= SE23_COV_STEP_MAX);
-}
-
-/*
- * Nonzero if the left-form step (cov_step.h, "The left form") stays below
- * SE23_COV_STEP_MAX, from next = the Deltas after it and b
- * (se23_input_blocks_bound): the rows of Bl = Ad_{Delta+} D Bt sum to at
- * most bl = 2 b (1 + |v+|_1 + |p+|_1) (rotation rows below 2, a skew row
- * below the 1-norm), F's to 1 + dt; P_left+ by se23_cov_fits, and
- * J_left+ = F J_left + Bl at most (1 + dt) mJ + bl, mJ the sum of |J_left|.
- */
-static int left_step_fits(const se23_preint_unc_t *fu, const se23_pose_t *next,
-                          se23_real_t dt, se23_real_t b, const se23_step_noise_t *q)
-{
-    const se23_real_t bl = SE23_R(2) * b * (SE23_R(1) + translation_sum(next));
+    const se23_real_t d = (md * (SE23_R(1) + dt)) + (SE23_R(2) * u);
+    const se23_real_t bl = SE23_R(2) * b * (SE23_R(1) + d);
     const se23_real_t jb = ((SE23_R(1) + dt) * sum_abs(fu->J_left.m, 54)) + bl;
-    return (jb <= SE23_COV_STEP_MAX) &&
+    return (cb <= SE23_COV_STEP_MAX) && (d <= SE23_COV_STEP_MAX) &&
+           (jb <= SE23_COV_STEP_MAX) &&
            se23_cov_fits(SE23_R(1) + dt, bl, q, SE23_GAUSS_N_POSE, fu->P_left.m, 9);
 }
 
@@ -191,25 +182,20 @@ se23_status_t se23_preint_unc_add_work(se23_preint_unc_t *fu,
     }
     se23_sample_inputs(fu->kind, c, U, &in->Bt);
     if ((tame == 0 && !se23_pose_finite(U)) || !se23_input_blocks_finite(&in->Bt, tame) ||
-        !rest_fits(fu, U, &c->f_b, c->dt)) {
-        return SE23_ERR_NONFINITE; /* the increment, B_k, the Deltas or the
-                                    * classical Jacobians would overflow */
+        !step_fits(fu, U, &c->f_b, c->dt, se23_input_blocks_bound(&c->f_b, c->dt), &in->q)) {
+        return SE23_ERR_NONFINITE; /* the increment, B_k or a result would overflow */
     }
-    se23_preint_t next = fu->f;
-    se23_preint_add_increment(&next, U, c->dt);
-    if (!left_step_fits(fu, &next.delta, c->dt, se23_input_blocks_bound(&c->f_b, c->dt),
-                        &in->q)) {
-        return SE23_ERR_NONFINITE;
-    }
-    /* Nothing below can fail: update in place. */
-    se23_input_blocks_left(&fu->f.delta.R, &next.delta.v, &next.delta.p, &in->Bt);
-    se23_cov_left_step(c->dt, &in->Bt, &in->q, fu->P_left.m);
-    se23_cov_left_jac_step(c->dt, &in->Bt, &fu->J_left);
+    /* Nothing below can fail: update in place. The classical step and Bl
+     * take Delta R before the step, Bl Delta's v and p after it. */
     if (fu->classic != 0) {
         se23_preint_classic_step(&fu->cl, &fu->f.delta.R, &U->R, &c->w_ib_b,
                                  &c->f_b, c->dt);
     }
-    fu->f = next;
+    const se23_mat3_t R = fu->f.delta.R;
+    se23_preint_add_increment(&fu->f, U, c->dt);
+    se23_input_blocks_left(&R, &fu->f.delta.v, &fu->f.delta.p, &in->Bt);
+    se23_cov_left_step(c->dt, &in->Bt, &in->q, fu->P_left.m);
+    se23_cov_left_jac_step(c->dt, &in->Bt, &fu->J_left);
     return SE23_OK;
 }
 
@@ -222,17 +208,17 @@ se23_status_t se23_preint_unc_cov(const se23_preint_unc_t *fu, se23_mat9_t *P,
         return st;
     }
     /* Ad_{Delta^-1} = D G with U = Delta, dt = 0 (cov_step.h): the step's
-     * kernels with no input and no noise. */
+     * shear and rotation stages, without input or noise. */
     const se23_pose_t *D = &fu->f.delta;
-    static const se23_step_noise_t none = {SE23_R(0), SE23_R(0), SE23_R(0), SE23_R(0)};
-    static const se23_input_blocks_t zero = {{{{{{SE23_R(0)}}}}}};
-    const se23_real_t jb = SE23_R(2) * (SE23_R(1) + translation_sum(D)) * sum_abs(fu->J_left.m, 54);
-    if (!se23_cov_step_fits(D, SE23_R(0), SE23_R(0), &none, SE23_GAUSS_N_POSE, fu->P_left.m, 9) ||
+    const se23_step_noise_t none = {SE23_R(0), SE23_R(0), SE23_R(0), SE23_R(0)};
+    const se23_real_t g = SE23_R(1) + translation_sum(D);
+    const se23_real_t jb = SE23_R(2) * g * sum_abs(fu->J_left.m, 54);
+    if (!se23_cov_fits(g, SE23_R(0), &none, SE23_GAUSS_N_POSE, fu->P_left.m, 9) ||
         !(jb <= SE23_COV_STEP_MAX)) {
         return SE23_ERR_NONFINITE;
     }
     /* Nothing below can fail. */
-    se23_cov_step(D, SE23_R(0), &zero, &none, SE23_GAUSS_N_POSE, fu->P_left.m, P->m, 9);
+    se23_cov_fk_congruence(D, SE23_R(0), fu->P_left.m, P->m, 9);
     if (J != NULL) {
         se23_gauss_fk_mul(D, SE23_R(0), &fu->J_left, J);
     }
