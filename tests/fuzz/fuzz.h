@@ -697,35 +697,50 @@ static inline double fz_rowsum9x6(const se23_mat9x6_t *B)
 }
 
 /**
- * fz_step_bound for the sample s of a state with biases b_g, b_a: the
- * increment and input matrix at the corrected inputs (what
- * se23_gauss_predict and se23_preint_unc_add use); HUGE_VAL (no
- * tolerance) if the library refuses them.
+ * The parts of fz_step_bound for the sample s of a state with biases b_g,
+ * b_a: the increment U and the largest row sum b of the input matrix at the
+ * corrected inputs (what se23_gauss_predict and se23_preint_unc_add use),
+ * the largest noise term q and, with walks, walk term w. Returns 0 if the
+ * library refuses the increment or the input matrix.
  */
+static inline int fz_sample_parts(const se23_imu_sample_t *s, const se23_vec3_t *b_g,
+                                  const se23_vec3_t *b_a, se23_input_jac_kind_t kind,
+                                  const se23_imu_noise_t *q, int walks, se23_pose_t *U,
+                                  double *b, double *qm, double *wm)
+{
+    se23_imu_sample_t c = *s;
+    se23_mat9x6_t B;
+    int i;
+    for (i = 0; i < 3; ++i) {
+        c.w_ib_b.v[i] = s->w_ib_b.v[i] + b_g->v[i];
+        c.f_b.v[i] = s->f_b.v[i] + b_a->v[i];
+    }
+    if (se23_imu_increment(&c, U) != SE23_OK ||
+        se23_gauss_input_jac(kind, &c.w_ib_b, &c.f_b, c.dt, &B) != SE23_OK) {
+        return 0;
+    }
+    *b = fz_rowsum9x6(&B);
+    *qm = fmax((double)q->gyro_noise * q->gyro_noise, (double)q->accel_noise * q->accel_noise) /
+          (double)c.dt;
+    *wm = walks ? fmax((double)q->gyro_walk * q->gyro_walk, (double)q->accel_walk * q->accel_walk) *
+                      (double)c.dt
+                : 0.0;
+    return 1;
+}
+
+/** fz_step_bound for the sample s of a state with biases b_g, b_a
+ *  (fz_sample_parts); HUGE_VAL (no tolerance) if the library refuses it. */
 static inline double fz_sample_bound(const se23_imu_sample_t *s, const se23_vec3_t *b_g,
                                      const se23_vec3_t *b_a, se23_input_jac_kind_t kind,
                                      const se23_imu_noise_t *q, int walks, const se23_real_t *P,
                                      int n, int stride)
 {
-    se23_imu_sample_t c = *s;
     se23_pose_t U;
-    se23_mat9x6_t B;
-    int i;
-    double qm, wm;
-    for (i = 0; i < 3; ++i) {
-        c.w_ib_b.v[i] = s->w_ib_b.v[i] + b_g->v[i];
-        c.f_b.v[i] = s->f_b.v[i] + b_a->v[i];
-    }
-    if (se23_imu_increment(&c, &U) != SE23_OK ||
-        se23_gauss_input_jac(kind, &c.w_ib_b, &c.f_b, c.dt, &B) != SE23_OK) {
+    double b, qm, wm;
+    if (!fz_sample_parts(s, b_g, b_a, kind, q, walks, &U, &b, &qm, &wm)) {
         return HUGE_VAL;
     }
-    qm = fmax((double)q->gyro_noise * q->gyro_noise, (double)q->accel_noise * q->accel_noise) /
-         (double)c.dt;
-    wm = walks ? fmax((double)q->gyro_walk * q->gyro_walk, (double)q->accel_walk * q->accel_walk) *
-                     (double)c.dt
-               : 0.0;
-    return fz_step_bound(&U, (double)c.dt, fz_rowsum9x6(&B), qm, wm, P, n, stride);
+    return fz_step_bound(&U, (double)s->dt, b, qm, wm, P, n, stride);
 }
 
 #endif /* SE23_FUZZ_H */

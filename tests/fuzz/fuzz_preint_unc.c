@@ -100,35 +100,25 @@ static void one_cov(const se23_preint_unc_t *fu)
 }
 
 /* fz_step_bound of the left-form step (preint_unc.h): F the time shear
- * (rows summing to 1 + dt), Bl = Ad_{Delta+} D Bt with rows summing to at
- * most 2 b (1 + |v+|_1 + |p+|_1), b those of B = D Bt (twice: a rotation's
- * rows sum to below 2), Delta+ = after the sample. */
+ * (rows summing to 1 + dt, as a shear of zero translation), Bl = Ad_{Delta+}
+ * D Bt with rows summing to at most 2 b (1 + |v+|_1 + |p+|_1), b those of
+ * B = D Bt (twice: a rotation's rows sum to below 2), Delta+ = after the
+ * sample. */
 static double left_bound(const se23_imu_sample_t *s, const se23_preint_unc_t *after,
                          const se23_imu_noise_t *q, const se23_real_t *P_before)
 {
-    se23_pose_t U0;
     const se23_pose_t *D = &after->f.delta;
-    const double big = fz_sample_bound(s, &after->b_g, &after->b_a, after->kind, q, 0, P_before,
-                                       9, 9); /* HUGE_VAL if the sample is refused */
-    se23_imu_sample_t c = *s;
-    se23_mat9x6_t B;
-    double t = 1.0, qm;
+    se23_pose_t U;
+    double b, qm, wm, t = 1.0;
     int i;
-    if (!isfinite(big)) {
-        return big;
-    }
-    for (i = 0; i < 3; ++i) {
-        c.w_ib_b.v[i] = s->w_ib_b.v[i] + after->b_g.v[i];
-        c.f_b.v[i] = s->f_b.v[i] + after->b_a.v[i];
-        t += fabs((double)D->v.v[i]) + fabs((double)D->p.v[i]);
-    }
-    if (se23_gauss_input_jac(after->kind, &c.w_ib_b, &c.f_b, c.dt, &B) != SE23_OK) {
+    if (!fz_sample_parts(s, &after->b_g, &after->b_a, after->kind, q, 0, &U, &b, &qm, &wm)) {
         return HUGE_VAL;
     }
-    se23_identity(&U0);
-    qm = fmax((double)q->gyro_noise * q->gyro_noise, (double)q->accel_noise * q->accel_noise) /
-         (double)c.dt;
-    return fz_step_bound(&U0, (double)c.dt, 4.0 * fz_rowsum9x6(&B) * t, qm, 0.0, P_before, 9, 9);
+    for (i = 0; i < 3; ++i) {
+        t += fabs((double)D->v.v[i]) + fabs((double)D->p.v[i]);
+    }
+    se23_identity(&U);
+    return fz_step_bound(&U, (double)s->dt, 4.0 * b * t, qm, wm, P_before, 9, 9);
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
