@@ -51,7 +51,8 @@ static se23_status_t config_check(const se23_ins_config_t *cfg)
         cfg->dt_nominal, cfg->max_gap, cfg->max_outage, cfg->outage_accel,
         cfg->outage_rate, cfg->lever_b.v[0], cfg->lever_b.v[1], cfg->lever_b.v[2],
         cfg->gnss_gate, cfg->delay_horizon, cfg->preint_window, cfg->zupt_sigma_v,
-        cfg->zaru_sigma_w, cfg->zaru_after};
+        cfg->zaru_sigma_w, cfg->zaru_after, cfg->floor_sigma, cfg->floor_step,
+        cfg->floor_swing};
     const size_t n_bytes = sizeof reals;
     const int n_reals = (int)n_bytes / (int)sizeof reals[0];
     int i;
@@ -68,11 +69,14 @@ static se23_status_t config_check(const se23_ins_config_t *cfg)
         (cfg->accel_range <= SE23_R(0)) || (cfg->max_outage > SE23_INS_MAX_OUTAGE) ||
         (is_flag(cfg->earth_rotation) == 0) || (is_flag(cfg->bias_states) == 0) ||
         (is_flag(cfg->zupt) == 0) || (cfg->gate_recover < 0) ||
-        (cfg->zaru_after > SE23_INS_MAX_OUTAGE)) {
+        (cfg->zaru_after > SE23_INS_MAX_OUTAGE) || (cfg->floor_swing > SE23_INS_MAX_OUTAGE)) {
         return SE23_ERR_DOMAIN;
     }
     if ((cfg->zupt != 0) && (cfg->zupt_sigma_v <= SE23_R(0))) {
         return SE23_ERR_DOMAIN;
+    }
+    if ((cfg->floor_sigma > SE23_R(0)) && ((cfg->zupt == 0) || (cfg->floor_step <= SE23_R(0)))) {
+        return SE23_ERR_DOMAIN; /* floor updates happen at stances */
     }
     /* below 1 ns (the clock's resolution) max_gap / dt_nominal would not
      * fit the int64 of max_missing */
@@ -127,6 +131,7 @@ se23_status_t se23_ins_setup(const se23_ins_config_t *cfg, se23_ins_t *ins)
         ins->max_gap_ns = to_ns(cfg->max_gap);
         ins->horizon_ns = to_ns(cfg->delay_horizon);
         ins->zaru_after_ns = to_ns(cfg->zaru_after);
+        ins->floor_swing_ns = to_ns(cfg->floor_swing);
         ins->max_missing = (int64_t)per_gap + 1;
         ins->nis_last = SE23_R(0);
         ins->zupt_nis_last = SE23_R(0);
@@ -158,6 +163,9 @@ void se23_ins_start(se23_ins_t *ins, int64_t t_ns, const se23_gauss_t *g)
         se23_stationary_reset(&ins->det);
     }
     ins->rest_ns = 0;
+    ins->move_ns = ins->floor_swing_ns; /* the first rest is a stance */
+    ins->floor_d = SE23_R(0);
+    ins->floor_set = 0;
     se23_ins_ring_restart(ins);
     se23_ins_factor_reset(ins);
 }

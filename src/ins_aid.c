@@ -1,7 +1,7 @@
 /* The navigation filter's measurement updates: zero velocity and rate at
- * rest, GNSS with its gate and gate recovery; see ins.h. Every update runs
- * on the user's (R, v, p) in ins->work and is committed to the state only
- * when it succeeded (and passed the gate). */
+ * rest, the floor level at stances, GNSS with its gate and gate recovery;
+ * see ins.h. Every update runs on the user's (R, v, p) in ins->work and is
+ * committed to the state only when it succeeded (and passed the gate). */
 #include "ins_internal.h"
 
 #include <stddef.h>
@@ -45,15 +45,56 @@ static se23_status_t update_work(se23_ins_t *ins, se23_real_t *nis)
                                    nis);
 }
 
+/* What a stance's floor update did. */
+enum { FLOOR_NONE, FLOOR_USED, FLOOR_LEVEL };
+
+/*
+ * The floor update of a stance's first stationary sample on ins->work
+ * (ins.h, "Floor"): the down row of the position model (no lever arm),
+ * innovation floor_d - p_D, 1-sigma floor_sigma. The first stance, or one
+ * more than floor_step off the level, sets the level instead
+ * (*what = FLOOR_LEVEL) and updates nothing.
+ */
+static se23_status_t floor_update(se23_ins_t *ins, int *what)
+{
+    const se23_vec3_t no_lever = {{SE23_R(0), SE23_R(0), SE23_R(0)}};
+    const se23_real_t sh = ins->cfg.floor_sigma;
+    se23_meas_t *y = &ins->meas;
+    se23_vec3_t on_floor = ins->work.T.p;
+    se23_mat3_t C;
+    se23_status_t st;
+    int j;
+    *what = FLOOR_LEVEL;
+    if ((ins->floor_set == 0) ||
+        !(se23_fabs(ins->floor_d - on_floor.v[2]) <= ins->cfg.floor_step)) {
+        return SE23_OK;
+    }
+    on_floor.v[2] = ins->floor_d;
+    diag_cov(sh, sh, sh, &C);
+    st = se23_meas_pos_nav(&ins->work.T, &on_floor, &no_lever, &C, y);
+    if (st != SE23_OK) {
+        return st;
+    }
+    y->m = 1; /* the down row only */
+    y->z[0] = y->z[2];
+    for (j = 0; j < SE23_GAUSS_NMAX; ++j) {
+        y->H[j] = y->H[(2 * SE23_GAUSS_NMAX) + j];
+    }
+    y->R[0] = sh * sh;
+    *what = FLOOR_USED;
+    return update_work(ins, NULL);
+}
+
 int se23_ins_zupt(se23_ins_t *ins, const se23_imu_sample_t *s, int rest)
 {
     const se23_vec3_t zero = {{SE23_R(0), SE23_R(0), SE23_R(0)}};
     const se23_real_t sv = ins->cfg.zupt_sigma_v;
     const se23_real_t sw = ins->cfg.zaru_sigma_w;
-    int zaru = 0;
+    int zaru = 0, floor = FLOOR_NONE;
     se23_mat3_t C;
     se23_status_t st = user_state(ins);
-    if ((rest == SE23_INS_REST_ZARU) && (ins->cfg.bias_states != 0) && (sw > SE23_R(0))) {
+    if (((rest & SE23_INS_REST_LEVEL) == SE23_INS_REST_ZARU) && (ins->cfg.bias_states != 0) &&
+        (sw > SE23_R(0))) {
         zaru = 1;
     }
     diag_cov(sv, sv, sv, &C);
@@ -75,8 +116,15 @@ int se23_ins_zupt(se23_ins_t *ins, const se23_imu_sample_t *s, int rest)
             st = update_work(ins, NULL);
         }
     }
+    if ((st == SE23_OK) && ((rest & SE23_INS_REST_FLOOR) != 0)) {
+        st = floor_update(ins, &floor);
+    }
     if (st == SE23_OK) {
         st = commit(ins);
+    }
+    if ((st == SE23_OK) && (floor == FLOOR_LEVEL)) {
+        ins->floor_d = ins->work.T.p.v[2];
+        ins->floor_set = 1;
     }
     if (ins->replaying != 0) {
         return (st == SE23_OK) ? 1 : 0; /* counted when it was first applied */
@@ -89,6 +137,13 @@ int se23_ins_zupt(se23_ins_t *ins, const se23_imu_sample_t *s, int rest)
     ins->zupt_nis_sum += ins->zupt_nis_last;
     if (zaru != 0) {
         se23_ins_count(&ins->c.zaru_used);
+    }
+    if (floor == FLOOR_USED) {
+        se23_ins_count(&ins->c.floor_used);
+    } else if (floor == FLOOR_LEVEL) {
+        se23_ins_count(&ins->c.floor_levels);
+    } else {
+        /* no stance began */
     }
     return 1;
 }

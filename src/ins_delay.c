@@ -26,6 +26,8 @@ static void take_snapshot(se23_ins_t *ins)
     ins->snap[k].g = ins->g;
     ins->snap[k].t_ns = ins->t_ns;
     ins->snap[k].last = ins->last;
+    ins->snap[k].floor_d = ins->floor_d;
+    ins->snap[k].floor_set = ins->floor_set;
 }
 
 /* Drops the ring entries not after the older snapshot. */
@@ -109,6 +111,8 @@ se23_ins_verdict_t se23_ins_fuse_delayed(se23_ins_t *ins, const se23_ins_gnss_t 
     ins->g = ins->snap[pick].g;
     ins->t_ns = ins->snap[pick].t_ns;
     ins->last = ins->snap[pick].last;
+    ins->floor_d = ins->snap[pick].floor_d;
+    ins->floor_set = ins->snap[pick].floor_set;
     /* Replay: the same steps as live (prediction, the rest updates the
      * detector had called for), the fix at its own time. */
     ins->replaying = 1;

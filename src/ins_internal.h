@@ -89,15 +89,16 @@ void se23_ins_factor_reset(se23_ins_t *ins);
 /**
  * The rest updates sample s (dt_ns after the last accepted one) calls for:
  * SE23_INS_REST_NONE (moving, or no ZUPT configured), SE23_INS_REST_ZUPT,
- * or SE23_INS_REST_ZARU once the rest has lasted zaru_after. Feeds the
+ * or SE23_INS_REST_ZARU once the rest has lasted zaru_after; with floor
+ * updates, SE23_INS_REST_FLOOR added when a stance begins. Feeds the
  * detector (ins_rest.c).
  */
 int se23_ins_rest_level(se23_ins_t *ins, const se23_imu_sample_t *s, int64_t dt_ns);
 
 /**
- * The zero-velocity update after raw sample s, and the zero-rate update
- * too if rest is SE23_INS_REST_ZARU (and ZARU configured). Returns 1 on
- * success.
+ * The zero-velocity update after raw sample s, the zero-rate update too if
+ * rest's level is SE23_INS_REST_ZARU (and ZARU configured), and the floor
+ * update if rest has SE23_INS_REST_FLOOR. Returns 1 on success.
  */
 int se23_ins_zupt(se23_ins_t *ins, const se23_imu_sample_t *s, int rest);
 

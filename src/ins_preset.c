@@ -95,6 +95,20 @@ se23_status_t se23_ins_preset_foot(se23_real_t rate_hz, se23_real_t lat,
     c.zupt_sigma_v = SE23_R(0.02) * se23_sqrt((se23_real_t)c.detector.window);
     c.zaru_sigma_w = c.noise.gyro_noise * se23_sqrt(rate_hz);
     c.zaru_after = SE23_R(0.5);
+    /* The floor (ins.h, "Floor"): a walk on level floors, so each stance's
+     * first stationary sample is at the height of the level it is on. The
+     * sensor's height there varies with the floor's flatness (indoor floors
+     * are within about +-1 cm over a room, DIN 18202 / ACI 117 tolerances:
+     * a sigma of about 0.4 cm) and with the foot's pose when the detector
+     * first calls it still (a few degrees of pitch about a contact point
+     * ~0.1 m away: 0.5 cm): 0.65 cm in quadrature, floor_sigma 1 cm. A new
+     * level is a stance more than half the lowest stair riser or kerb
+     * (10 cm) off the level: 5 cm. Two stances are at least 0.2 s of motion
+     * apart (a swing lasts 0.3-0.5 s even running); less is the detector's
+     * flicker in one. */
+    c.floor_sigma = SE23_R(0.01);
+    c.floor_step = SE23_R(0.05);
+    c.floor_swing = SE23_R(0.2);
     /* Alignment: the first second at rest; the start defines the frame
      * (position 0, heading 0: no magnetometer, no GNSS). Turn-on biases
      * of the class: 1 deg/s, 5 mg. */

@@ -102,12 +102,22 @@ static int stationary_window(se23_ins_t *ins, const se23_imu_sample_t *s)
 
 int se23_ins_rest_level(se23_ins_t *ins, const se23_imu_sample_t *s, int64_t dt_ns)
 {
+    int rest;
+    /* both sums stay below their cap + max_gap_ns: no overflow */
     if ((ins->cfg.zupt == 0) || (stationary_window(ins, s) == 0)) {
         ins->rest_ns = 0;
+        if (ins->move_ns < ins->floor_swing_ns) {
+            ins->move_ns += dt_ns;
+        }
         return SE23_INS_REST_NONE;
     }
     if (ins->rest_ns < ins->zaru_after_ns) {
-        ins->rest_ns += dt_ns; /* below zaru_after_ns + max_gap_ns: no overflow */
+        ins->rest_ns += dt_ns;
     }
-    return (ins->rest_ns >= ins->zaru_after_ns) ? SE23_INS_REST_ZARU : SE23_INS_REST_ZUPT;
+    rest = (ins->rest_ns >= ins->zaru_after_ns) ? SE23_INS_REST_ZARU : SE23_INS_REST_ZUPT;
+    if ((ins->cfg.floor_sigma > SE23_R(0)) && (ins->move_ns >= ins->floor_swing_ns)) {
+        rest |= SE23_INS_REST_FLOOR; /* a stance begins */
+    }
+    ins->move_ns = 0;
+    return rest;
 }

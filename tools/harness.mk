@@ -130,7 +130,7 @@ demo-walk:
 walk-misalign:
 	@sh tools/install-deps.sh $(BUILD)
 	@$(MAKE) -s --no-print-directory harness BUILD=$(BUILD)
-	@sh tools/walk/misalign-sweep.sh $(H) $(MISALIGN)
+	@INS_OPTS="$(or $(INS_OPTS),--floor-sigma 0)" sh tools/walk/misalign-sweep.sh $(H) $(MISALIGN)
 
 walk-sim:
 	@sh tools/install-deps.sh $(BUILD)

@@ -92,8 +92,8 @@
  * any fix within the horizon has a snapshot before it. Fusing a fix stamped
  * d seconds late costs the replay of up to d + delay_horizon seconds of
  * samples (prediction and the zero-velocity updates), in that call.
- * Memory: sizeof(se23_ins_t) = 17,392 B + SE23_INS_RING x 72 B in double,
- * 8,904 B + SE23_INS_RING x 48 B in float (26,608 / 15,048 B with the
+ * Memory: sizeof(se23_ins_t) = 17,488 B + SE23_INS_RING x 72 B in double,
+ * 8,968 B + SE23_INS_RING x 48 B in float (26,704 / 15,112 B with the
  * default ring; README "The navigation filter"; test_ins.c asserts it),
  * the kernels' work areas included (1,512 / 756 B, kept here and not on
  * the stack of the calls);
@@ -118,6 +118,19 @@
  * attitude error neglected). The delay keeps ZARU out of short stances in
  * which the body still turns (a foot's, 45-70 ms). Counted in zupt_used /
  * zaru_used.
+ *
+ * Floor. A foot that walks on a level floor is at the same height at
+ * every stance: with floor_sigma > 0 the first stationary sample of each
+ * stance (after its ZUPT) also applies p_D = floor_d, 1-sigma floor_sigma
+ * (one update per stance: a stance's height error is the same in all its
+ * samples). A stance begins at a stationary sample after at least
+ * floor_swing seconds of motion (a shorter one is the detector's flicker
+ * within a stance). The first stance after init or alignment sets floor_d
+ * to its own height; a stance more than floor_step above or below the
+ * level is on a new level (a stair, a kerb, a landing): floor_d moves
+ * there, no update. The stances of a ramp that climbs more than floor_step per
+ * stride start a new level each; a gentler one is pulled toward the level
+ * it started on. Counted in floor_used / floor_levels.
  *
  * Alignment. se23_ins_align starts a static alignment: the readings of
  * the first stationary stretch (duration seconds of consecutive stationary
@@ -231,6 +244,8 @@ typedef struct {
     uint32_t gnss_early, gnss_stale, gnss_gated, gate_resets;
     uint32_t course_headings;  /**< headings set from the GNSS course */
     uint32_t zupt_used, zaru_used;
+    uint32_t floor_used;       /**< floor updates applied (one per stance) */
+    uint32_t floor_levels;     /**< floor levels set: the first stance, then each new one */
     uint32_t time_resets, filter_errors, init_rejected;
 } se23_ins_counters_t;
 
@@ -257,6 +272,12 @@ typedef struct {
     se23_real_t zupt_sigma_v;   /**< 1-sigma of v = 0 at rest [m/s] */
     se23_real_t zaru_sigma_w;   /**< 1-sigma of w = 0 at rest [rad/s] (bias states; 0: no ZARU) */
     se23_real_t zaru_after;     /**< rest [s] before ZARU applies (0: at once) */
+    se23_real_t floor_sigma;    /**< 1-sigma of "a stance is on the floor level" [m]
+                                 *   (0: no floor updates; needs zupt; see "Floor") */
+    se23_real_t floor_step;     /**< height change [m] from the level beyond which a
+                                 *   stance is on a new level (floor_sigma > 0) */
+    se23_real_t floor_swing;    /**< motion [s] that separates two stances (shorter:
+                                 *   the detector's flicker within one) */
 } se23_ins_config_t;
 
 /** A GNSS fix in the nav frame, stamped with the time it refers to. */
@@ -293,11 +314,15 @@ typedef struct {
     se23_vec3_t sww, sff;     /**< sums of their squares, per axis */
 } se23_ins_align_sums_t;
 
-/** What the detector made of a sample: the updates applied after it. */
+/** What the detector made of a sample: the updates applied after it, a
+ *  level (NONE, ZUPT, ZARU) with the FLOOR flag on the first stationary
+ *  sample of a stance when floor updates are configured. */
 enum {
     SE23_INS_REST_NONE = 0,  /**< moving */
     SE23_INS_REST_ZUPT = 1,  /**< stationary: zero velocity */
-    SE23_INS_REST_ZARU = 2   /**< at rest for zaru_after: zero velocity and rate */
+    SE23_INS_REST_ZARU = 2,  /**< at rest for zaru_after: zero velocity and rate */
+    SE23_INS_REST_LEVEL = 3, /**< mask of the level */
+    SE23_INS_REST_FLOOR = 4  /**< flag: a stance begins: the floor update too */
 };
 
 /** A stored state for the replay of delayed fixes. */
@@ -305,6 +330,8 @@ typedef struct {
     se23_gauss_t g;           /**< state after the sample at t_ns */
     int64_t t_ns;
     se23_imu_sample_t last;   /**< that sample (the rate of the lever arm) */
+    se23_real_t floor_d;      /**< the floor level then (se23_ins_t) */
+    int floor_set;
 } se23_ins_snapshot_t;
 
 /** One accepted sample as the ring keeps it. */
@@ -345,6 +372,9 @@ typedef struct {
     int64_t back_t_ns, back_seq;  /**< clock-step detection */
     int64_t last_fix_ns;          /**< time of the last fused fix (-1: none) */
     int64_t rest_ns;              /**< time the detector has seen rest (0: moving) */
+    int64_t move_ns;              /**< time it has seen motion since (0: at rest;
+                                   *   saturates at floor_swing_ns) */
+    int64_t floor_swing_ns;       /**< floor_swing */
     /* structures holding int64 */
     se23_ins_gnss_t pending;      /**< a fix ahead of the state */
     se23_ins_factor_t fac, fac_out; /**< preintegration */
@@ -357,6 +387,8 @@ typedef struct {
     int have_pending;
     int gated_run;                /**< consecutive gated fixes */
     se23_real_t nis_last;         /**< NIS of the last fused fix */
+    se23_real_t floor_d;          /**< down position of the floor level [m] ("Floor") */
+    int floor_set;                /**< nonzero once a stance has set floor_d */
     int ring_head, ring_count;    /**< oldest entry, number of entries */
     int replaying;                /**< nonzero inside a replay (counters not repeated) */
     int n_snap;                   /**< snapshots held */

@@ -107,6 +107,9 @@ static void base_config(fz_t *f, se23_ins_config_t *c, se23_ins_align_t *a)
     c->zupt_sigma_v = (se23_real_t)0.01;
     c->zaru_sigma_w = (se23_real_t)1e-3;
     c->zaru_after = (se23_real_t)0.05;
+    c->floor_sigma = (c->zupt && (m & 1)) ? (se23_real_t)0.01 : 0;
+    c->floor_step = (se23_real_t)0.05;
+    c->floor_swing = (se23_real_t)0.1;
     a->sigma_p = 1;
     a->sigma_yaw = (se23_real_t)0.1;
     a->sigma_v = (se23_real_t)0.1;
@@ -127,7 +130,8 @@ static void override_config(fz_t *f, se23_ins_config_t *c)
                             &c->gnss_gate,        &c->delay_horizon,     &c->preint_window,
                             &c->detector.sigma_a, &c->detector.sigma_g,  &c->detector.gravity,
                             &c->detector.threshold, &c->zupt_sigma_v,    &c->zaru_sigma_w,
-                            &c->zaru_after};
+                            &c->zaru_after,       &c->floor_sigma,       &c->floor_step,
+                            &c->floor_swing};
     int *ints[] = {&c->earth_rotation, &c->bias_states, &c->gate_recover, &c->zupt,
                    &c->detector.window};
     const int n_reals = (int)(sizeof reals / sizeof reals[0]);

@@ -40,7 +40,7 @@ typedef struct {
 } insr_factor_t;
 
 /** Number of counters (se23_ins_counters_t is uint32_t fields only). */
-#define INSR_N_COUNTERS 25
+#define INSR_N_COUNTERS 27
 /** Index of counter `field` of se23_ins_counters_t in insr_check_t.c. */
 #define INSR_CIDX(field) ((int)(offsetof(se23_ins_counters_t, field) / sizeof(uint32_t)))
 
@@ -100,7 +100,7 @@ extern const insr_threshold_t insr_thresholds[];
 extern const int insr_n_thresholds;
 
 /** Reals and integers of a configuration with its alignment request. */
-#define INSR_FLAT_REALS 37
+#define INSR_FLAT_REALS 40
 #define INSR_FLAT_INTS 6
 
 /** r, iv = every real and every integer field of c and a, in a fixed

@@ -160,7 +160,8 @@ void insr_flatten(const se23_ins_config_t *c, const se23_ins_align_t *a,
         c->outage_accel, c->outage_rate, c->lever_b.v[0], c->lever_b.v[1], c->lever_b.v[2],
         c->gnss_gate, c->delay_horizon, c->preint_window, c->detector.sigma_a,
         c->detector.sigma_g, c->detector.gravity, c->detector.threshold, c->zupt_sigma_v,
-        c->zaru_sigma_w, c->zaru_after, a->p_n.v[0], a->p_n.v[1], a->p_n.v[2], a->sigma_p,
+        c->zaru_sigma_w, c->zaru_after, c->floor_sigma, c->floor_step, c->floor_swing,
+        a->p_n.v[0], a->p_n.v[1], a->p_n.v[2], a->sigma_p,
         a->yaw, a->sigma_yaw, a->sigma_v, a->sigma_bg, a->sigma_ba, a->duration,
         a->course_speed, a->course_sigma};
     const int ints[INSR_FLAT_INTS] = {c->earth_rotation, c->bias_states, c->gate_recover,
@@ -174,8 +175,8 @@ const char *const insr_counter_name[INSR_N_COUNTERS] = {
     "imu_duplicate",  "imu_out_of_order", "imu_bad_time", "imu_bad_dt", "imu_missing",
     "imu_seq_jumps",  "gnss_used",   "gnss_delayed", "gnss_pending_dropped",
     "gnss_nonfinite", "gnss_early",  "gnss_stale",  "gnss_gated",     "gate_resets",
-    "course_headings", "zupt_used",  "zaru_used",   "time_resets",    "filter_errors",
-    "init_rejected"};
+    "course_headings", "zupt_used",  "zaru_used",   "floor_used",     "floor_levels",
+    "time_resets",    "filter_errors", "init_rejected"};
 
 /* se23_ins_counters_t must be exactly the INSR_N_COUNTERS uint32_t named above. */
 typedef char insr_counters_are_uint32[(sizeof(se23_ins_counters_t) ==

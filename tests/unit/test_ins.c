@@ -46,6 +46,17 @@ static void m_recover(se23_ins_config_t *c) { c->gate_recover = -1; }
 static void m_zupt_sigma(se23_ins_config_t *c) { c->zupt_sigma_v = SE23_R(0); }
 static void m_detector(se23_ins_config_t *c) { c->detector.window = 1; }
 static void m_inf_lever(se23_ins_config_t *c) { c->lever_b.v[1] = (se23_real_t)INFINITY; }
+/* floor updates: at stances (zupt on) and with a step to judge new levels */
+static void m_floor(se23_ins_config_t *c) { c->floor_sigma = SE23_R(0.01); }
+static void m_floor_no_zupt(se23_ins_config_t *c)
+{
+    c->floor_sigma = SE23_R(0.01);
+    c->floor_step = SE23_R(0.05);
+    c->zupt = 0;
+}
+static void m_floor_neg(se23_ins_config_t *c) { c->floor_sigma = SE23_R(-0.01); }
+static void m_floor_nan(se23_ins_config_t *c) { c->floor_step = (se23_real_t)NAN; }
+static void m_floor_swing(se23_ins_config_t *c) { c->floor_swing = SE23_INS_MAX_OUTAGE * SE23_R(2); }
 
 /* The filter's RAM as ins.h and the README state it (a firmware's budget):
  * a fixed part plus the ring of SE23_INS_RING samples. */
@@ -54,10 +65,10 @@ static void test_ins_memory_is_as_documented(void **state)
     (void)state;
 #if SE23_CFG_DOUBLE
     assert_int_equal(sizeof(se23_ins_hist_t), 72);
-    assert_int_equal(sizeof(se23_ins_t), 17392 + SE23_INS_RING * 72);
+    assert_int_equal(sizeof(se23_ins_t), 17488 + SE23_INS_RING * 72);
 #else
     assert_int_equal(sizeof(se23_ins_hist_t), 48);
-    assert_int_equal(sizeof(se23_ins_t), 8904 + SE23_INS_RING * 48);
+    assert_int_equal(sizeof(se23_ins_t), 8968 + SE23_INS_RING * 48);
 #endif
 }
 
@@ -76,6 +87,9 @@ static void test_setup_rejects_each_bad_field_and_writes_nothing(void **state)
         {m_outage, SE23_ERR_DOMAIN},       {m_ring, SE23_ERR_DIM},
         {m_recover, SE23_ERR_DOMAIN},      {m_zupt_sigma, SE23_ERR_DOMAIN},
         {m_detector, SE23_ERR_DIM},        {m_inf_lever, SE23_ERR_NONFINITE},
+        {m_floor, SE23_ERR_DOMAIN},        {m_floor_no_zupt, SE23_ERR_DOMAIN},
+        {m_floor_neg, SE23_ERR_DOMAIN},    {m_floor_nan, SE23_ERR_NONFINITE},
+        {m_floor_swing, SE23_ERR_DOMAIN},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
         se23_ins_config_t c;

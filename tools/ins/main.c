@@ -80,6 +80,9 @@ static void usage(FILE *f)
             "  --zupt-alpha A        detector's false-motion probability at rest (0.01)\n"
             "  --zupt-sigma-v S      1-sigma of v = 0 at rest [m/s] (0.01; the preset's\n"
             "                        with --preset; this option overrides both)\n"
+            "  --floor-sigma S       with --preset foot: 1-sigma of the floor level at\n"
+            "                        each stance [m] (the preset's 0.02), 0 = no floor\n"
+            "                        updates (ins.h, \"Floor\")\n"
             "  --max-gap S           longest interval one sample may bridge (25 samples)\n"
             "  --max-outage S        longest outage carried across (10)\n"
             "  --preint S            publish preintegrated factors of S seconds (0 = off)\n"
@@ -156,7 +159,7 @@ static int parse_args(int argc, char **argv, node_opts_t *o, se23_ins_config_t *
     double rate = 200.0, lat_deg = 45.0, max_gap = -1.0, gate = 30.0, horizon = -1.0;
     double max_outage = 10.0, preint = 0.0, lever[3] = {0.0, 0.0, 0.0};
     int64_t recover = 5, window = 20;
-    double alpha = 0.01, zupt_sv = -1.0;
+    double alpha = 0.01, zupt_sv = -1.0, floor_sigma = -1.0;
     int profile = HARNESS_IMU_MEMS, earth = 1, bias = 1, zupt = 0, i;
     const harness_imu_profile_t *prof;
     const harness_opt_t opts[] = {
@@ -177,6 +180,7 @@ static int parse_args(int argc, char **argv, node_opts_t *o, se23_ins_config_t *
         {"--zupt-window", HOPT_I64, &window, 0, 0, NULL},
         {"--zupt-alpha", HOPT_DOUBLE, &alpha, 1e-6, 0.5, NULL},
         {"--zupt-sigma-v", HOPT_DOUBLE, &zupt_sv, 1e-6, 1e3, NULL},
+        {"--floor-sigma", HOPT_DOUBLE, &floor_sigma, 0.0, 1e3, NULL},
         {"--max-gap", HOPT_DOUBLE, &max_gap, 1e-6, 1.0, NULL},
         {"--max-outage", HOPT_DOUBLE, &max_outage, 0.0, (double)SE23_INS_MAX_OUTAGE, NULL},
         {"--preint", HOPT_DOUBLE, &preint, 0.0, inf, NULL},
@@ -244,6 +248,13 @@ static int parse_args(int argc, char **argv, node_opts_t *o, se23_ins_config_t *
     }
     if (zupt_sv > 0.0) {
         c->zupt_sigma_v = zupt_sv;
+    }
+    if (floor_sigma >= 0.0) {
+        if (o->preset != 1) {
+            fprintf(stderr, "se23-ins: --floor-sigma needs --preset foot (its gate and swing)\n");
+            return -1;
+        }
+        c->floor_sigma = floor_sigma;
     }
     return 0;
 }
@@ -488,6 +499,8 @@ static void summary(const node_t *nd, int64_t skipped, double cpu_s)
         {"course_headings", c->course_headings},
         {"zupt_used", c->zupt_used},
         {"zaru_used", c->zaru_used},
+        {"floor_used", c->floor_used},
+        {"floor_levels", c->floor_levels},
         {"time_resets", c->time_resets},
         {"filter_errors", c->filter_errors},
         {"init_rejected", c->init_rejected},

@@ -3,8 +3,10 @@
 # relative to the gyroscope's (se23-import --accel-misalign): a sensitivity
 # study, not a calibration; the preset and make demo-walk use none.
 #
-#   sh tools/walk/misalign-sweep.sh HARNESS_BUILD_DIR [RX,RY,RZ ...]
+#   [INS_OPTS=...] sh tools/walk/misalign-sweep.sh HARNESS_BUILD_DIR [RX,RY,RZ ...]
 #
+# INS_OPTS: more se23-ins options (make walk-misalign: --floor-sigma 0, the
+# filter without the floor, whose vertical drift the study explains).
 # Each rotation vector in degrees (default: +-0.5 and +-1 about each axis);
 # prints one line per vector: the 3D / horizontal / vertical closure and
 # the mean NIS of the live ZUPTs (se23-ins's zupt_nis_mean), the walk's
@@ -17,11 +19,12 @@ RUN="$H/walk-misalign"
 CSV=tools/data/xio-gait-tracking/short_walk.csv
 VECTORS=${*:-"0,0,0 -1,0,0 -0.5,0,0 0.5,0,0 1,0,0 0,-1,0 0,-0.5,0 0,0.5,0 0,1,0 0,0,-1 0,0,-0.5 0,0,0.5 0,0,1"}
 mkdir -p "$RUN"
-echo "== se23 walk: closure against an accelerometer misalignment (double, preset foot)"
+echo "== se23 walk: closure against an accelerometer misalignment (double, preset foot ${INS_OPTS:-})"
 printf '%-16s %8s %8s %8s %9s\n' "misalign [deg]" "3D [m]" "horiz" "vert" "ZUPT NIS"
 for r in $VECTORS; do
     "$BIN/se23-import" --accel-misalign "$r" --out "file://$RUN/imu.log?mode=w" "$CSV" >/dev/null
-    "$BIN/se23-ins" --preset foot --imu-rate 400 --lat 51.45 --nav-rate 400 \
+    # shellcheck disable=SC2086 # INS_OPTS splits into options on purpose
+    "$BIN/se23-ins" --preset foot --imu-rate 400 --lat 51.45 --nav-rate 400 ${INS_OPTS:-} \
         --in "file://$RUN/imu.log?speed=0" --out "file://$RUN/ins.log?mode=w" >"$RUN/summary.txt"
     nis=$(awk '$1 == "zupt_nis_mean" { print $2 }' "$RUN/summary.txt")
     "$BIN/se23-walk" "$RUN/ins.log" | sed -n 's/^  closure error *\([0-9.]*\) m 3D, \([0-9.]*\) m horizontal, \([0-9.]*\) m vertical$/\1 \2 \3/p' |

@@ -16,9 +16,11 @@
 # errors. Prints one line per vector: the 3D / horizontal / vertical
 # closure, its normalised error against the filter's covariance (3 dof)
 # and the mean NIS of the live ZUPTs; then plots the height of each stance
-# of every run, and of the real walk if make demo-walk has run
+# of every run, and of the real walk (with and without the floor) if make
+# demo-walk has run
 # (tools/walk/plot_twin.py; PYTHON, default /usr/bin/python3 with
-# matplotlib), into HARNESS_BUILD_DIR/walk-sim/twin_heights.png.
+# matplotlib), into HARNESS_BUILD_DIR/walk-sim/twin_heights.png. INS_OPTS:
+# more se23-ins options (e.g. --floor-sigma 0: the filter without the floor).
 set -eu
 H=${1:-build/harness}
 [ $# -gt 0 ] && shift
@@ -27,15 +29,18 @@ RUN="$H/walk-sim"
 VECTORS=${*:-"0,0,0 0,0.25,0 0,0.5,0 0,-0.5,0 0.5,0,0 0,0,0.5"}
 mkdir -p "$RUN"
 REAL="$H/walk/plots/walk.csv"
+REAL0="$H/walk/plots/walk-nofloor.csv"
 set --
 [ -f "$REAL" ] && set -- "real walk (make demo-walk)=$REAL"
-echo "== se23 walk-sim: the simulated walk (mems at 400 Hz, seed ${SEED:-1}, double, preset foot)"
+[ -f "$REAL0" ] && set -- "$@" "real walk without the floor=$REAL0"
+echo "== se23 walk-sim: the simulated walk (mems at 400 Hz, seed ${SEED:-1}, double, preset foot ${INS_OPTS:-})"
 printf '%-16s %8s %8s %8s %10s %9s\n' "misalign [deg]" "3D [m]" "horiz" "vert" "norm. err" "ZUPT NIS"
 for r in $VECTORS; do
     "$BIN/se23-sim" --scenario walk --imu-rate 400 --imu mems --earth off --lat 51.45 \
         --gnss-rate 0 --init-sigma 0,0,0 --seed "${SEED:-1}" --accel-misalign "$r" \
         --url "file://$RUN/sim.log?mode=w"
-    "$BIN/se23-ins" --preset foot --imu-rate 400 --lat 51.45 --nav-rate 400 \
+    # shellcheck disable=SC2086 # INS_OPTS splits into options on purpose
+    "$BIN/se23-ins" --preset foot --imu-rate 400 --lat 51.45 --nav-rate 400 ${INS_OPTS:-} \
         --in "file://$RUN/sim.log?speed=0" --out "file://$RUN/ins.log?mode=w" >"$RUN/summary.txt"
     nis=$(awk '$1 == "zupt_nis_mean" { print $2 }' "$RUN/summary.txt")
     "$BIN/se23-walk" --csv "$RUN/walk-$r.csv" "$RUN/ins.log" >"$RUN/walk.txt"
