@@ -107,3 +107,17 @@ w_sim_floor() {
             "$WW/sim-floor.txt"
 }
 check walk-sim-twin-floor w_sim_floor
+# The same twin on a stepped path (SCENARIO=stairs: 8 strides up a 0.15 m
+# riser, 8 down): every stance is on a new level, which the preset's floor
+# must see (17 levels: the first rest and 16 risers; no floor update pulls
+# a stance back to the old level), and the loop closes as without the
+# floor (4 mm; bound 20 mm, normalised error 0.03, bound 11.34).
+w_sim_stairs() {
+    SCENARIO=stairs sh tools/walk/sim-walk.sh "$BUILD/harness" 0,0,0 >"$WW/sim-stairs.txt" &&
+        cat "$WW/sim-stairs.txt" &&
+        grep -q "^  floor_levels  *17\$" "$BUILD/harness/walk-sim/summary.txt" &&
+        grep -q "^  floor_used  *0\$" "$BUILD/harness/walk-sim/summary.txt" &&
+        awk '$1 == "0,0,0" { a = ($2 <= 0.02 && $5 <= 11.34) } END { exit a ? 0 : 1 }' \
+            "$WW/sim-stairs.txt"
+}
+check walk-sim-stairs w_sim_stairs

@@ -160,7 +160,7 @@ static group_stats_t group_stats(const epoch_t *ep, size_t n, group_t g)
 }
 
 /* The simulator's scenarios by number (tools/sim/traj.h). */
-static const char *const scen_names[] = {"static", "uav", "car", "nav", "walk"};
+static const char *const scen_names[] = {"static", "uav", "car", "nav", "walk", "stairs"};
 #define N_SCEN ((int)(sizeof scen_names / sizeof scen_names[0]))
 
 static void print_header(const log_data_t *d)

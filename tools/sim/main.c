@@ -69,9 +69,10 @@ static void usage(FILE *f)
 {
     fprintf(f,
             "usage: se23-sim [options]\n"
-            "  --scenario static|uav|car|nav|walk   trajectory (uav)\n"
+            "  --scenario NAME                 trajectory: static|uav|car|nav|walk|stairs\n"
+            "                                  (uav)\n"
             "  --duration S                    length [s] (scenario default:\n"
-            "                                  60/60/120/3600/26.8)\n"
+            "                                  60/60/120/3600/26.8/26.8)\n"
             "  --imu-rate HZ                   100..2000 (200)\n"
             "  --imu perfect|mems|tactical|navigation   error profile (mems)\n"
             "  --earth on|off                  Earth rotation (on)\n"

@@ -123,6 +123,10 @@ static traj_raw_t raw_nav(ld_t t)
  *     -u^3 (1 - u)^3 (1 - 2 u) / 0.0037190 (the bump's largest value),
  * all three with zero first and second derivatives at u = 0 and 1, so the
  * foot stops dead at each stance. The heading follows the circle's tangent.
+ * The stairs scenario is the same walk on a stepped path: each of the first
+ * WALK_STRIDES / 2 swings also climbs STAIRS_RISE m as m(u), each of the
+ * others descends as much, so every stance is on a new level and the last
+ * is on the first's.
  */
 #define WALK_REST 5.0L
 #define WALK_STRIDES 16
@@ -131,6 +135,7 @@ static traj_raw_t raw_nav(ld_t t)
 #define WALK_STRIDE 1.4L
 #define WALK_HEIGHT 0.12L
 #define WALK_PITCH 0.5L /* rad, ~29 deg */
+#define STAIRS_RISE 0.15L
 
 /* With its u-derivatives: 64 u^3 (1 - u)^3 (peak 1 at u = 1/2), or if odd
  * u^3 (1 - u)^3 (1 - 2 u) scaled to a peak of 1 (at u = 0.2113). */
@@ -153,11 +158,14 @@ static curve_t walk_bump(ld_t u, int odd)
     return c;
 }
 
-static traj_raw_t raw_walk(ld_t t)
+/* The walk with a climb of rise [m] per stride in its first half, a
+ * descent as large in its second (0: level). */
+static traj_raw_t raw_walk(ld_t t, ld_t rise)
 {
     const ld_t radius = WALK_STRIDES * WALK_STRIDE / (2.0L * PI_L);
     const ld_t tw = t - WALK_REST;
     curve_t arc = constant(0.0L), up = constant(0.0L), pitch = constant(0.0L);
+    curve_t level = constant(0.0L);
     traj_raw_t r;
     ld_t phi, cphi, sphi;
     if (tw >= (ld_t)WALK_STRIDES * WALK_PERIOD) {
@@ -165,13 +173,23 @@ static traj_raw_t raw_walk(ld_t t)
     } else if (tw > 0.0L) {
         const ld_t k = floorl(tw / WALK_PERIOD);
         const ld_t ts = tw - k * WALK_PERIOD - (WALK_PERIOD - WALK_SWING); /* into the swing */
+        const ld_t half = (ld_t)(WALK_STRIDES / 2);
+        const ld_t step = k < half ? rise : -rise;
         arc = constant(k * WALK_STRIDE);
+        level = constant(rise * (k < half ? k : (ld_t)WALK_STRIDES - k));
         if (ts > 0.0L) {
             const ld_t u = ts / WALK_SWING, w = 1.0L / WALK_SWING;
             const ld_t u2 = u * u;
-            arc.f += WALK_STRIDE * u2 * u * (10.0L - 15.0L * u + 6.0L * u2);
-            arc.d1 = WALK_STRIDE * w * 30.0L * u2 * (1.0L - u) * (1.0L - u);
-            arc.d2 = WALK_STRIDE * w * w * 60.0L * u * (1.0L - u) * (1.0L - 2.0L * u);
+            /* the minimum-jerk step m(u) and its time derivatives */
+            const ld_t m = u2 * u * (10.0L - 15.0L * u + 6.0L * u2);
+            const ld_t dm = w * 30.0L * u2 * (1.0L - u) * (1.0L - u);
+            const ld_t ddm = w * w * 60.0L * u * (1.0L - u) * (1.0L - 2.0L * u);
+            arc.f += WALK_STRIDE * m;
+            arc.d1 = WALK_STRIDE * dm;
+            arc.d2 = WALK_STRIDE * ddm;
+            level.f += step * m;
+            level.d1 = step * dm;
+            level.d2 = step * ddm;
             up = walk_bump(u, 0);
             pitch = walk_bump(u, 1);
             up.f *= WALK_HEIGHT;
@@ -192,9 +210,9 @@ static traj_raw_t raw_walk(ld_t t)
     r.pos[1].f = radius * (1.0L - cphi);
     r.pos[1].d1 = sphi * arc.d1;
     r.pos[1].d2 = sphi * arc.d2 + cphi * arc.d1 * arc.d1 / radius;
-    r.pos[2].f = -up.f;
-    r.pos[2].d1 = -up.d1;
-    r.pos[2].d2 = -up.d2;
+    r.pos[2].f = -(level.f + up.f);
+    r.pos[2].d1 = -(level.d1 + up.d1);
+    r.pos[2].d2 = -(level.d2 + up.d2);
     r.roll = constant(0.0L);
     r.pitch = pitch;
     r.yaw.f = phi;
@@ -203,11 +221,11 @@ static traj_raw_t raw_walk(ld_t t)
     return r;
 }
 
-static const char *const names[TRAJ_COUNT] = {"static", "uav", "car", "nav", "walk"};
-static const double durations[TRAJ_COUNT] = {60.0, 60.0, 120.0, 3600.0,
-                                             (double)(2.0L * WALK_REST +
-                                                      WALK_STRIDES * WALK_PERIOD)};
-static const double ramps[TRAJ_COUNT] = {1.0, 5.0, 10.0, 60.0, 1.0};
+#define WALK_DURATION ((double)(2.0L * WALK_REST + WALK_STRIDES * WALK_PERIOD))
+static const char *const names[TRAJ_COUNT] = {"static", "uav", "car", "nav", "walk", "stairs"};
+static const double durations[TRAJ_COUNT] = {60.0, 60.0, 120.0, 3600.0, WALK_DURATION,
+                                             WALK_DURATION};
+static const double ramps[TRAJ_COUNT] = {1.0, 5.0, 10.0, 60.0, 1.0, 1.0};
 
 const char *traj_name(traj_scenario_t s)
 {
@@ -252,7 +270,10 @@ traj_point_t traj_eval(traj_scenario_t s, ld_t t)
         r = raw_nav(t);
         break;
     case TRAJ_WALK:
-        r = raw_walk(t);
+        r = raw_walk(t, 0.0L);
+        break;
+    case TRAJ_STAIRS:
+        r = raw_walk(t, STAIRS_RISE);
         break;
     case TRAJ_STATIC:
     default:

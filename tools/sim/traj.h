@@ -18,7 +18,9 @@ typedef enum {
     TRAJ_NAV = 3,    /**< aircraft in a 100 m/s coordinated turn, 20 min per circle */
     TRAJ_WALK = 4,   /**< foot-mounted IMU: 16 strides of 1.4 m closing a circle, at rest
                           5 s before and after (traj.c) */
-    TRAJ_COUNT = 5
+    TRAJ_STAIRS = 5, /**< the walk on a stepped path: 8 strides up a 0.15 m riser
+                          each, 8 down (traj.c) */
+    TRAJ_COUNT = 6
 } traj_scenario_t;
 
 /** The reference state at one instant. */
@@ -30,7 +32,7 @@ typedef struct {
     ld_vec3_t w_nb_b; /**< angular rate of body w.r.t. nav, body frame [rad/s] */
 } traj_point_t;
 
-/** Name ("static", "uav", "car", "nav", "walk") of a scenario. */
+/** Name ("static", "uav", "car", "nav", "walk", "stairs") of a scenario. */
 const char *traj_name(traj_scenario_t s);
 
 /** Scenario called name, or -1. */

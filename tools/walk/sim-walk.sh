@@ -15,12 +15,14 @@
 # about x and about z. SEED (environment, default 1) seeds the sensor
 # errors. Prints one line per vector: the 3D / horizontal / vertical
 # closure, its normalised error against the filter's covariance (3 dof)
-# and the mean NIS of the live ZUPTs; then plots the height of each stance
-# of every run, and of the real walk (with and without the floor) if make
-# demo-walk has run
-# (tools/walk/plot_twin.py; PYTHON, default /usr/bin/python3 with
-# matplotlib), into HARNESS_BUILD_DIR/walk-sim/twin_heights.png. INS_OPTS:
+# and the mean NIS of the live ZUPTs; then (walk only) plots the height
+# of each stance of every run, and of the real walk (with and without the
+# floor) if make demo-walk has run (tools/walk/plot_twin.py; PYTHON,
+# default /usr/bin/python3 with matplotlib), into
+# HARNESS_BUILD_DIR/walk-sim/twin_heights.png. INS_OPTS:
 # more se23-ins options (e.g. --floor-sigma 0: the filter without the floor).
+# SCENARIO=stairs: the same walk on a stepped path (8 strides up a 0.15 m
+# riser each, 8 down; the foot's truth at each stance is on a new level).
 set -eu
 H=${1:-build/harness}
 [ $# -gt 0 ] && shift
@@ -33,10 +35,10 @@ REAL0="$H/walk/plots/walk-nofloor.csv"
 set --
 [ -f "$REAL" ] && set -- "real walk (make demo-walk)=$REAL"
 [ -f "$REAL0" ] && set -- "$@" "real walk without the floor=$REAL0"
-echo "== se23 walk-sim: the simulated walk (mems at 400 Hz, seed ${SEED:-1}, double, preset foot ${INS_OPTS:-})"
+echo "== se23 walk-sim: the simulated ${SCENARIO:-walk} (mems at 400 Hz, seed ${SEED:-1}, double, preset foot ${INS_OPTS:-})"
 printf '%-16s %8s %8s %8s %10s %9s\n' "misalign [deg]" "3D [m]" "horiz" "vert" "norm. err" "ZUPT NIS"
 for r in $VECTORS; do
-    "$BIN/se23-sim" --scenario walk --imu-rate 400 --imu mems --earth off --lat 51.45 \
+    "$BIN/se23-sim" --scenario "${SCENARIO:-walk}" --imu-rate 400 --imu mems --earth off --lat 51.45 \
         --gnss-rate 0 --init-sigma 0,0,0 --seed "${SEED:-1}" --accel-misalign "$r" \
         --url "file://$RUN/sim.log?mode=w"
     # shellcheck disable=SC2086 # INS_OPTS splits into options on purpose
@@ -50,7 +52,9 @@ for r in $VECTORS; do
         /normalised closure error/ { for (i = 1; i <= NF; i++) if ($i == "error") ne = $(i + 1) }
         END { printf "%-16s %8s %8s %8s %10s %9s\n", r, c3, ch, cv, ne, nis }' "$RUN/walk.txt"
 done
-if "${PYTHON:-/usr/bin/python3}" tools/walk/plot_twin.py --out "$RUN/twin_heights.png" "$@"; then
+if [ "${SCENARIO:-walk}" != walk ]; then
+    echo "   plot: only for the walk (its stances' true height is 0 throughout)"
+elif "${PYTHON:-/usr/bin/python3}" tools/walk/plot_twin.py --out "$RUN/twin_heights.png" "$@"; then
     echo "   plot: $RUN/twin_heights.png"
 else
     echo "   plot: failed (needs ${PYTHON:-/usr/bin/python3} with matplotlib)"
