@@ -60,6 +60,15 @@ static void hop(se23_ins_t *f, double h)
     feed(f, 0.0, 100);
 }
 
+/* ins with the floor's 1-sigma sigma, after 0.5 s at rest: the first
+ * stance has set the level. */
+static void start_on_floor(double sigma, se23_ins_config_t *c)
+{
+    floor_config(c, sigma);
+    start(&ins, c);
+    feed(&ins, 0.0, 100);
+}
+
 static double down(const se23_ins_t *f)
 {
     se23_gauss_t out;
@@ -72,9 +81,7 @@ static void test_floor_holds_a_hop_to_the_level(void **state)
 {
     (void)state;
     se23_ins_config_t c;
-    floor_config(&c, 1e-3);
-    start(&ins, &c);
-    feed(&ins, 0.0, 100); /* the first rest sets the level */
+    start_on_floor(1e-3, &c); /* the first rest sets the level */
     assert_int_equal(ins.c.floor_levels, 1);
     assert_int_equal(ins.c.floor_used, 0);
     assert_true(ins.floor_set == 1 && fabs((double)ins.floor_d) < 1e-9);
@@ -83,9 +90,7 @@ static void test_floor_holds_a_hop_to_the_level(void **state)
     assert_int_equal(ins.c.floor_levels, 1);
     assert_true(fabs(down(&ins)) < 2e-3);
     /* without floor updates the same hop ends 2 cm up: the test can fail */
-    c.floor_sigma = SE23_R(0);
-    start(&ins, &c);
-    feed(&ins, 0.0, 100);
+    start_on_floor(0.0, &c);
     hop(&ins, 0.02);
     assert_int_equal(ins.c.floor_used + ins.c.floor_levels, 0);
     assert_near(down(&ins), -0.02, 0.0, 2e-3);
@@ -95,9 +100,7 @@ static void test_a_stair_starts_a_new_level(void **state)
 {
     (void)state;
     se23_ins_config_t c;
-    floor_config(&c, 1e-3);
-    start(&ins, &c);
-    feed(&ins, 0.0, 100);
+    start_on_floor(1e-3, &c);
     hop(&ins, 0.15); /* a riser: 3x floor_step */
     assert_int_equal(ins.c.floor_levels, 2);
     assert_int_equal(ins.c.floor_used, 0);
@@ -113,9 +116,7 @@ static void test_a_blip_is_not_a_new_stance(void **state)
 {
     (void)state;
     se23_ins_config_t c;
-    floor_config(&c, 1e-3);
-    start(&ins, &c);
-    feed(&ins, 0.0, 100);
+    start_on_floor(1e-3, &c);
     feed(&ins, 1.0, 1); /* moving for one window, 0.1 s < floor_swing */
     feed(&ins, 0.0, 100);
     assert_true(ins.c.zupt_used > 150U); /* rest resumed */
