@@ -75,12 +75,11 @@ static se23_status_t floor_update(se23_ins_t *ins, int *what)
     if (st != SE23_OK) {
         return st;
     }
-    y->m = 1; /* the down row only */
+    y->m = 1; /* the down row only (R's leading entry is C's: sh^2) */
     y->z[0] = y->z[2];
     for (j = 0; j < SE23_GAUSS_NMAX; ++j) {
         y->H[j] = y->H[(2 * SE23_GAUSS_NMAX) + j];
     }
-    y->R[0] = sh * sh;
     *what = FLOOR_USED;
     return update_work(ins, NULL);
 }

@@ -81,7 +81,7 @@ static void usage(FILE *f)
             "  --zupt-sigma-v S      1-sigma of v = 0 at rest [m/s] (0.01; the preset's\n"
             "                        with --preset; this option overrides both)\n"
             "  --floor-sigma S       with --preset foot: 1-sigma of the floor level at\n"
-            "                        each stance [m] (the preset's 0.02), 0 = no floor\n"
+            "                        each stance [m] (the preset's 0.01), 0 = no floor\n"
             "                        updates (ins.h, \"Floor\")\n"
             "  --max-gap S           longest interval one sample may bridge (25 samples)\n"
             "  --max-outage S        longest outage carried across (10)\n"
@@ -251,7 +251,7 @@ static int parse_args(int argc, char **argv, node_opts_t *o, se23_ins_config_t *
     }
     if (floor_sigma >= 0.0) {
         if (o->preset != 1) {
-            fprintf(stderr, "se23-ins: --floor-sigma needs --preset foot (its gate and swing)\n");
+            fprintf(stderr, "se23-ins: --floor-sigma needs --preset foot (its step and swing)\n");
             return -1;
         }
         c->floor_sigma = floor_sigma;
