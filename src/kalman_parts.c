@@ -8,14 +8,18 @@
  *   w  = L^-1 z            m^2/2;  nis = w.w, m
  *   U  = C L^-T            n m(m-1)/2, n m multiplies
  *   dx = U w, |U_i|^2      2 n m
- *   P+ = P - U U^T         m n(n+1)/2   (upper triangle, mirrored)
+ *   X  = P - U U^T         m n(n+1)/2   (upper triangle, mirrored)
+ *   K  = U L^-1            n m(m-1)/2, n m multiplies
+ *   P+ = X - K (H X - R K^T)   n (a m + m^2) + m n(n+1)/2 (joseph_refine)
  * The kernels take m three rows at a time (zero padding), so m counts as
  * a multiple of 3 in the n-sized terms. GNSS position with a lever arm
  * (n = 15, m = 3, a = 6): 270 + 54 + 10 + 9 + 45 + 90 + 360 = 838
- * multiply-adds and 3 square roots; the dense Joseph form with the same
- * factorisation is about 2 n^3 + 4 n^2 m = 9,500.
+ * multiply-adds and 3 square roots for X, 45 + 765 more for K and P+;
+ * the dense Joseph form with the same factorisation is about
+ * 2 n^3 + 4 n^2 m = 9,500.
  *
- * Why P+ = P - U U^T and not the Joseph form. Both equal P - C S^-1 C^T in
+ * Why the Schur complement first. Both it and the Joseph form equal
+ * P - C S^-1 C^T in
  * exact arithmetic for the gain K = C S^-1 computed from the same P.
  * P - U U^T is the Schur complement of S in the positive semidefinite
  *   M = [[S, C^T], [C, P]] = [H; I] P [H; I]^T + diag(R, 0),
@@ -29,9 +33,17 @@
  * buys insensitivity to errors in a suboptimal K (here K is optimal to
  * rounding) at about n^2 (a + 2 m) + n m^2 = 2,900 multiply-adds even with
  * the structure, and its rounding error carries |I - K H|^2 |P|, which
- * grows with the gain (small R). P+ is symmetric by construction (upper
- * triangle computed, mirrored); test_kalman runs thousands of updates with
- * tiny R and checks the smallest eigenvalue. */
+ * grows with the gain (small R). But the bound is relative to the prior:
+ * where R is below eps times the prior the posterior is below the
+ * rounding and X can come out negative there (issue 37, S5), so
+ * joseph_refine applies the Joseph form to X itself, which removes that
+ * error along the measured directions at any ratio up to 1/eps^2. A state
+ * correlated with a measured one keeps X's error, eps times its prior
+ * variance (only a factored form would remove it); the filter refuses an
+ * update whose result then fails se23_gauss_check (ins_aid.c, commit).
+ * P+ is symmetric by construction (upper triangle computed, mirrored);
+ * test_kalman runs thousands of updates with tiny R and checks the
+ * smallest eigenvalue, and a 1 km prior against a 1 cm fix. */
 #include "kalman_parts.h"
 
 #include <float.h>
@@ -338,6 +350,89 @@ static void downdate(const se23_real_t *P, const se23_real_t *U, int n, int m,
     }
 }
 
+/* In place over U = C L^-T: the gain K = C S^-1 = U L^-1 (row i solves
+ * L^T k_i = u_i, backward), padding columns left 0. n m(m-1)/2
+ * multiply-adds, n m multiplies. */
+static void gain_from_u(const se23_real_t *L, int n, int m, se23_real_t *U)
+{
+    for (int i = 0; i < n; ++i) {
+        se23_real_t *k = &U[M * i];
+        for (int r = m - 1; r >= 0; --r) {
+            se23_real_t s = k[r];
+            for (int q = r + 1; q < m; ++q) {
+                s = se23_fma(-L[SE23_COV_TRI(q) + r], k[q], s);
+            }
+            k[r] = s * L[SE23_COV_TRI(r) + r];
+        }
+    }
+}
+
+/* Column j's residual z = H X_j - R k_j of the constraint H X = R K^T
+ * (m values; X_j the column, k_j row j of K): a m + m^2 multiply-adds. */
+static void constraint_residual(const se23_meas_t *y, int n, unsigned mask,
+                                const se23_real_t *X, const se23_real_t *K, int j,
+                                se23_real_t *z)
+{
+    const se23_real_t *kj = &K[M * j];
+    for (int r = 0; r < y->m; ++r) {
+        const se23_real_t *h = &y->H[S * r], *rr = &y->R[M * r];
+        se23_real_t s = SE23_R(0);
+        for (int b = 0; b < n / 3; ++b) {
+            if (active(mask, b)) {
+                const int l = 3 * b;
+                s = se23_fma(h[l], X[S * l + j], s);
+                s = se23_fma(h[l + 1], X[S * (l + 1) + j], s);
+                s = se23_fma(h[l + 2], X[S * (l + 2) + j], s);
+            }
+        }
+        for (int c = 0; c < y->m; ++c) {
+            s = se23_fma(-rr[c], kj[c], s);
+        }
+        z[r] = s;
+    }
+}
+
+/* P+ = X - K (H X - R K^T) in place over X = P - U U^T, the upper
+ * triangle column by column, mirrored; a negative variance (the rounding
+ * of a zero one) is raised to 0 (cov.h).
+ *
+ * Why. X = P G^T, G = I - K H, and the Joseph form is
+ * P+ = G X + K R K^T = X - K Z, Z = H X - R K^T. In exact arithmetic
+ * H X = C^T - (S - R) K^T = R K^T, so Z = 0 and P+ = X; computed, X carries
+ * the Schur complement's rounding, of order eps |P|, which exceeds the
+ * posterior itself along a direction the measurement pins far below its
+ * prior (a 1 km prior, a 1 cm fix: 1e6 against 1e-4 m^2, float eps 6e-8):
+ * the variance comes out negative. Subtracting K Z multiplies that error by
+ * G, which is small exactly there (G = R S^-1 for a measured state), so
+ * the error becomes eps |G| |P| ~ eps R: the Joseph form's accuracy at any
+ * prior-to-R ratio below 1/eps^2, for the extra cost below and no storage
+ * but K in U's place and z.
+ *
+ * In place: column j reads X's entries (l, j), l in the active blocks,
+ * before it writes; the upper entries of column j are written only by
+ * column j and its lower entries only by the mirrors of later columns.
+ * Z is rounding-sized (|K Z| ~ eps |P|), so P+ stays within the bounds
+ * that keep X finite. n (a m + m^2) + m n(n+1)/2 multiply-adds (GNSS
+ * position with a lever arm: 405 + 360). */
+static void joseph_refine(const se23_meas_t *y, int n, unsigned mask,
+                          const se23_real_t *K, se23_real_t *z, se23_real_t *X)
+{
+    const int m = y->m;
+    for (int j = 0; j < n; ++j) {
+        constraint_residual(y, n, mask, X, K, j, z);
+        for (int i = 0; i <= j; ++i) {
+            const se23_real_t *ki = &K[M * i];
+            se23_real_t v = X[S * i + j];
+            for (int r = 0; r < m; ++r) {
+                v = se23_fma(-ki[r], z[r], v);
+            }
+            X[S * i + j] = v;
+            X[S * j + i] = v;
+        }
+    }
+    se23_cov_clamp_variances(X, n, S);
+}
+
 /* tr P = sum_i P_ii (P PSD: it bounds every P_ii; NaN stays NaN), three
  * partial sums (n = 9 or 15). */
 static se23_real_t trace(const se23_real_t *P, int n)
@@ -382,8 +477,10 @@ se23_status_t se23_kalman_cov_work(const se23_gauss_t *g, const se23_meas_t *y,
         !(usq * q <= SE23_KALMAN_CORR_MAX * SE23_KALMAN_CORR_MAX)) {
         return SE23_ERR_NONFINITE;
     }
-    /* Nothing fails from here on. */
+    /* Nothing fails from here on; w is free once dx is formed. */
     downdate(g->P.m, U, n, m, Pout);
+    gain_from_u(L, n, m, U);
+    joseph_refine(y, n, mask, U, w, Pout);
     *nis = q;
     return SE23_OK;
 }

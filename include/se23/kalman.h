@@ -12,15 +12,22 @@
  * The update (innovation z = y - h(Tbar, bbar), m = 1..9 rows):
  *   C = P H^T,  S = H C + R = L L^T      Cholesky, no explicit inverse
  *   K = C S^-1,  dx = K z,  nis = z^T S^-1 z
- *   P+ = P - C S^-1 C^T = P - U U^T, U = C L^-T
+ *   X = P - C S^-1 C^T = P - U U^T, U = C L^-T
+ *   P+ = X - K (H X - R K^T)
  *   Tbar+ = Tbar exp(dx_xi) (R re-orthonormalised),  bbar+ = bbar + dx_db
  * P+ equals the Joseph form (I - K H) P (I - K H)^T + K R K^T in exact
- * arithmetic; computed as the Schur complement of S (the Cholesky
- * elimination step) it is positive semidefinite to rounding whatever R,
- * and exactly symmetric (upper triangle computed, mirrored). Only the
+ * arithmetic (there H X = R K^T). X, the Schur complement of S (the
+ * Cholesky elimination step), is positive semidefinite to rounding
+ * relative to P; the second line is the Joseph form applied to X, which
+ * keeps a measured state's posterior accurate however far R is below its
+ * prior (up to 1/eps^2: a 1 km prior and a 1 cm fix in float). A state
+ * only correlated with a measured one keeps X's error, eps times its
+ * prior variance. P+ is exactly symmetric (upper triangle computed,
+ * mirrored), its variances never negative (a rounding of zero is raised
+ * to 0). Only the
  * 3-column blocks of H (phi, nu, rho, b_g, b_a) that hold a nonzero take
  * part: the models below touch one to three blocks, so a GNSS update
- * costs about 800 multiply-adds instead of the 9,500 of the dense Joseph form
+ * costs about 1,650 multiply-adds instead of the 9,500 of the dense Joseph form
  * (src/kalman_parts.c gives the count). P+ is the covariance of the error
  * at the old estimate; the O(|dx|) change of coordinates of the
  * retraction (a Jacobian close to I) is neglected, as usual in

@@ -488,6 +488,67 @@ static void test_kalman_update_keeps_p_psd_with_tiny_noise(void **state)
                   (double)SE23_CFG_COV_TOL);
 }
 
+/* A precise measurement on a vague prior (issue 37, S5): position 1-sigma
+ * 1 km and a 1 cm fix in float, 10 km and 1 um in double, a prior-to-R
+ * ratio of 1e10 / 1e20, beyond 1/eps. The Schur complement alone left
+ * P(6,6) = -0.125 (float) and -1.5e-8 (double); the posterior must be the
+ * exact one, R P / (P + R) (the prior is diagonal, so each axis is a
+ * scalar update), within the refined form's bound (kalman_parts.c: the
+ * error eps |G| |P| ~ eps^2 P, relative eps^2 P / R, plus rounding), the
+ * other variances untouched, and the state must pass se23_gauss_check. A
+ * velocity correlated with the position, nu = c rho + w (var w = 1e-2, as
+ * after a prediction), keeps P+ PSD; such a state keeps the Schur
+ * complement's error, eps P_nunu (kalman_parts.c), so c^2 var_p is 16 var
+ * w, within what float carries (the filter refuses an update it cannot
+ * honour: test_ins_precision). */
+static void test_kalman_update_precise_fix_on_vague_prior(void **state)
+{
+    (void)state;
+#if SE23_CFG_DOUBLE
+    const double var_p = 1e8, var_r = 1e-12;
+#else
+    const double var_p = 1e6, var_r = 1e-4;
+#endif
+    for (int correlated = 0; correlated <= 1; ++correlated) {
+        se23_gauss_t g;
+        memset(&g, 0, sizeof g);
+        g.n = 15;
+        g.T.R = (se23_mat3_t){{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+        for (int i = 0; i < 15; ++i) {
+            g.P.m[S * i + i] = SE23_R(1e-2);
+        }
+        for (int i = 6; i < 9; ++i) {
+            g.P.m[S * i + i] = (se23_real_t)var_p;
+            if (correlated) {
+                const double c = sqrt(16e-2 / var_p);
+                g.P.m[S * (i - 3) + (i - 3)] = (se23_real_t)(c * c * var_p + 1e-2);
+                g.P.m[S * (i - 3) + i] = (se23_real_t)(c * var_p);
+                g.P.m[S * i + (i - 3)] = (se23_real_t)(c * var_p);
+            }
+        }
+        assert_int_equal(se23_gauss_check(&g), SE23_OK);
+        const se23_real_t r = (se23_real_t)var_r;
+        const se23_mat3_t cov = {{{r, 0, 0}, {0, r, 0}, {0, 0, r}}};
+        const se23_vec3_t p = {{1, 2, 3}}, lever = {{0, 0, 0}};
+        se23_meas_t y;
+        assert_int_equal(se23_meas_pos_nav(&g.T, &p, &lever, &cov, &y), SE23_OK);
+        assert_int_equal(se23_kalman_update(&g, &y, &g, NULL), SE23_OK);
+        assert_int_equal(se23_gauss_check(&g), SE23_OK);
+        const double want = var_r * var_p / (var_p + var_r);
+        const double rel = 16.0 * SE23T_EPS + 4.0 * SE23T_EPS * SE23T_EPS * var_p / var_r;
+        for (int i = 6; i < 9; ++i) {
+            assert_near((double)g.P.m[S * i + i], want, 0.0, rel);
+        }
+        if (correlated) {
+            /* nu given rho: the independent 0.1 m/s, and P+ PSD */
+            assert_near((double)g.P.m[S * 3 + 3], 1e-2, 0.0, 1e-3);
+            assert_true(min_eigenvalue(g.P.m, 15) >= -(double)SE23_CFG_COV_TOL * 1e-2);
+        } else {
+            assert_true((double)g.P.m[S * 3 + 3] == (double)SE23_R(1e-2));
+        }
+    }
+}
+
 /* The structure scan: zero blocks of H are skipped, so an H with only the
  * rho block nonzero gives the same update as the dense formulas (covered
  * above); here every single-block H and the all-zero H (S = R, P
@@ -747,6 +808,7 @@ int main(void)
         cmocka_unit_test(test_kalman_update_refuses_overflowing_results),
         cmocka_unit_test(test_kalman_update_keeps_rotation_valid),
         cmocka_unit_test(test_kalman_update_keeps_p_psd_with_tiny_noise),
+        cmocka_unit_test(test_kalman_update_precise_fix_on_vague_prior),
         cmocka_unit_test(test_kalman_update_structure_blocks),
         cmocka_unit_test(test_kalman_update_work_equals_update_bit_for_bit),
         cmocka_unit_test(test_kalman_null_arguments_return_err_null),
