@@ -19,9 +19,20 @@ static se23_status_t user_state(se23_ins_t *ins)
     return se23_gauss_from_carried(&ins->model, &ins->g, &ins->work);
 }
 
-/* ins->g = ins->work, back in the model's coordinates. */
+/* ins->g = ins->work, back in the model's coordinates, if ins->work is a
+ * valid state. An update is PSD to rounding relative to the prior
+ * (kalman.h); a state pinned far below the scale of its prior, in a
+ * precision too short for the ratio, can come out of it outside the check
+ * of gauss.h, and is then refused here (the status of se23_gauss_check,
+ * the state kept), so that the filter never holds a state that
+ * se23_gauss_check refuses. One 15 x 15 factorisation per committed
+ * update. */
 static se23_status_t commit(se23_ins_t *ins)
 {
+    const se23_status_t st = se23_gauss_check(&ins->work);
+    if (st != SE23_OK) {
+        return st;
+    }
     if (ins->cfg.earth_rotation == 0) {
         ins->g = ins->work;
         return SE23_OK;
