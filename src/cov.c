@@ -30,7 +30,10 @@ static se23_status_t check3(const se23_real_t *A, int stride, se23_real_t *work)
     if (!se23_is_finite(bad)) {
         return SE23_ERR_NONFINITE;
     }
-    const se23_real_t d0 = se23_fabs(a0[0]), d1 = se23_fabs(a1[1]), d2 = se23_fabs(a2[2]);
+    if ((a0[0] < SE23_R(0)) || (a1[1] < SE23_R(0)) || (a2[2] < SE23_R(0))) {
+        return SE23_ERR_NOT_PSD; /* a variance is never negative */
+    }
+    const se23_real_t d0 = a0[0], d1 = a1[1], d2 = a2[2];
     const se23_real_t s01 = (d1 > d0) ? d1 : d0;
     const se23_real_t s = (d2 > s01) ? d2 : s01;
     const se23_real_t tol = SE23_R(SE23_CFG_COV_TOL) * s;
@@ -55,6 +58,7 @@ static se23_status_t check_loop(const se23_real_t *A, int n, int stride,
 {
     /* Finite: x * 0 is 0 for finite x and NaN for NaN or Inf. */
     se23_real_t bad = SE23_R(0), s = SE23_R(0);
+    int neg = 0;
     for (int i = 0; i < n; ++i) {
         const se23_real_t *a = &A[stride * i];
         for (int j = 0; j < n; ++j) {
@@ -62,9 +66,13 @@ static se23_status_t check_loop(const se23_real_t *A, int n, int stride,
         }
         const se23_real_t d = se23_fabs(a[i]);
         s = (d > s) ? d : s;
+        neg = neg || (a[i] < SE23_R(0));
     }
     if (!se23_is_finite(bad)) {
         return SE23_ERR_NONFINITE;
+    }
+    if (neg) {
+        return SE23_ERR_NOT_PSD; /* a variance is never negative */
     }
     const se23_real_t tol = SE23_R(SE23_CFG_COV_TOL) * s;
     const se23_real_t k = (s > SCALE_ABOVE) ? SE23_R(0.25) : SE23_R(1);

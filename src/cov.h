@@ -23,12 +23,31 @@
  *  slack too (se23_cov_step_fits). */
 #define SE23_COV_ABS_TOL (SE23_R(2) * SE23_R(FLT_MIN))
 
+/**
+ * Raises every negative diagonal entry of the leading n x n block of P to
+ * 0. A covariance the library computes is PSD in exact arithmetic, so a
+ * negative variance it produces is the rounding of a zero one (the
+ * denormal noise of a step from P = 0, the Joseph form of a state pinned
+ * to R = 0); raising it adds a PSD term, so the result stays within the
+ * checks' tolerance and meets their exact rule (no negative variance).
+ * n compares.
+ */
+static inline void se23_cov_clamp_variances(se23_real_t *P, int n, int stride)
+{
+    for (int i = 0; i < n; ++i) {
+        if (P[(stride + 1) * i] < SE23_R(0)) {
+            P[(stride + 1) * i] = SE23_R(0);
+        }
+    }
+}
+
 /** Reals of a packed lower triangle of n rows. */
 #define SE23_COV_TRI(n) ((n) * ((n) + 1) / 2)
 
 
 /**
- * Checks the leading n x n block of A: finite, symmetric
+ * Checks the leading n x n block of A: finite, no negative diagonal entry
+ * (a variance; no tolerance), symmetric
  * (|A_ij - A_ji| <= tol s) and positive semidefinite within tolerance
  * (A + (tol s + FLT_MIN) I has a Cholesky factor by se23_cov_chol_packed),
  * s = max_i |A_ii|, tol = SE23_CFG_COV_TOL. work: SE23_COV_TRI(n) reals

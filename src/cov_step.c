@@ -220,6 +220,7 @@ void se23_cov_step(const se23_pose_t *U, se23_real_t dt,
     }
     se23_cov_shear_pose(U, dt, P, stride, &S);
     se23_cov_rotate_pose(U, &S, out, stride);
+    se23_cov_clamp_variances(out, n, stride);
 }
 
 void se23_cov_fk_congruence(const se23_pose_t *U, se23_real_t dt, const se23_real_t *P,
@@ -228,13 +229,15 @@ void se23_cov_fk_congruence(const se23_pose_t *U, se23_real_t dt, const se23_rea
     se23_cov_pose_t S = {{SE23_R(0)}};
     se23_cov_shear_pose(U, dt, P, stride, &S);
     se23_cov_rotate_pose(U, &S, out, stride);
+    se23_cov_clamp_variances(out, SE23_GAUSS_N_POSE, stride);
 }
 
-/* Block (a, b) of a symmetric P from its upper triangle. */
+/* Block (a, b) of a symmetric P from its lower triangle (the one the
+ * covariance check factors). */
 static void blk_load_sym(const se23_real_t *P, int stride, int a, int b,
                          se23_mat3_t *A)
 {
-    if (a <= b) {
+    if (a >= b) {
         blk_load(P, stride, 3 * a, 3 * b, A);
     } else {
         blk_load(P, stride, 3 * b, 3 * a, A);
@@ -264,11 +267,15 @@ void se23_cov_nu_shear(const se23_vec3_t *a, int n, const se23_real_t *P,
         blk_load_sym(P, stride, RHO, j, &X);
         se23_m3_acc_skew_mul(&Rj[j], SE23_R(1), a, &X);
     }
-    if (out != P) {
-        for (int i = 0; i < n; ++i) {
-            for (int j = 0; j < n; ++j) {
-                out[stride * i + j] = P[stride * i + j];
-            }
+    /* The other entries unchanged: the lower triangle, the one the blocks
+     * were read from, copied and mirrored, so that a P accepted symmetric
+     * within the check's tolerance comes out exactly symmetric (in place
+     * too: each entry is read before its mirror is written). */
+    for (int i = 0; i < n; ++i) {
+        for (int j = i; j < n; ++j) {
+            const se23_real_t v = P[stride * j + i];
+            out[stride * i + j] = v;
+            out[stride * j + i] = v;
         }
     }
     /* Row and column nu of M P M^T; (nu, nu) = R_nu + R_rho (a^)^T
@@ -282,6 +289,7 @@ void se23_cov_nu_shear(const se23_vec3_t *a, int n, const se23_real_t *P,
             blk_store_pair(out, stride, 3 * NU, 3 * j, &Rj[j]);
         }
     }
+    se23_cov_clamp_variances(&out[(stride + 1) * 3 * NU], 3, stride);
 }
 
 void se23_input_blocks_rotate(const se23_mat3_t *R,

@@ -41,7 +41,8 @@
  * only the leading n x n block is read or written. 9x6 input matrices are
  * flat row-major: element (i, j) is m[6*i + j], columns (g, a).
  *
- * Validation. A covariance is accepted when it is finite, symmetric
+ * Validation. A covariance is accepted when it is finite, its diagonal
+ * (the variances) is nowhere negative (exactly: no tolerance), symmetric
  * (|P_ij - P_ji| <= tol s) and positive semidefinite within tolerance
  * (P + tol s I has a Cholesky factor), s = max_i |P_ii| and
  * tol = SE23_CFG_COV_TOL; otherwise SE23_ERR_NONFINITE, SE23_ERR_NOT_SYMMETRIC

@@ -69,13 +69,22 @@ static void test_cov_check_symmetry_tolerance_both_ways(void **state)
 static void test_cov_check_psd_tolerance_both_ways(void **state)
 {
     (void)state;
-    /* diag(1, -e): accepted for e well inside the tolerance, refused beyond. */
+    /* [[1, c], [c, 1]], c = 1 + e: eigenvalue -e; accepted for e well
+     * inside the tolerance, refused beyond. A negative variance is refused
+     * however small (issue 37, S4): diag(1, -e). */
     se23_real_t A[S * S] = {0};
     A[0] = SE23_R(1);
-    A[S + 1] = (se23_real_t)(-0.25 * (double)SE23_CFG_COV_TOL);
+    A[S + 1] = SE23_R(1);
+    A[1] = A[S] = (se23_real_t)(1.0 + 0.25 * (double)SE23_CFG_COV_TOL);
     assert_int_equal(se23_cov_check(A, 2, S), SE23_OK);
-    A[S + 1] = (se23_real_t)(-4.0 * (double)SE23_CFG_COV_TOL);
+    A[1] = A[S] = (se23_real_t)(1.0 + 4.0 * (double)SE23_CFG_COV_TOL);
     assert_int_equal(se23_cov_check(A, 2, S), SE23_ERR_NOT_PSD);
+    A[1] = A[S] = SE23_R(0);
+    A[S + 1] = (se23_real_t)(-0.25 * (double)SE23_CFG_COV_TOL);
+    assert_int_equal(se23_cov_check(A, 2, S), SE23_ERR_NOT_PSD);
+    A[S + 1] = -SE23_R(1e-38);
+    assert_int_equal(se23_cov_check(A, 2, S), SE23_ERR_NOT_PSD);
+    assert_int_equal(se23_cov_check(A, 3, S), SE23_ERR_NOT_PSD);
     /* Positive diagonal, indefinite: [[1, 2], [2, 1]] has eigenvalue -1. */
     A[S + 1] = SE23_R(1);
     A[1] = SE23_R(2);
@@ -129,7 +138,8 @@ static void test_cov_check_near_the_largest_real(void **state)
  * P = 0 with denormal noise gave entries below the smallest normal float,
  * one diagonal -2.8e-45; the zero matrix's shift (the smallest normal)
  * then fell below the pivot rule's minimum and the result, zero to
- * rounding, was refused. */
+ * rounding, was refused. The steps now raise such a variance to 0
+ * (se23_cov_clamp_variances), and the check refuses any negative one. */
 static void test_cov_check_denormal_noise_around_zero(void **state)
 {
     (void)state;
@@ -137,8 +147,10 @@ static void test_cov_check_denormal_noise_around_zero(void **state)
     A[0] = (se23_real_t)8e-42;
     A[2] = A[2 * S] = (se23_real_t)-7.3e-42;
     A[2 * S + 2] = (se23_real_t)6.7e-42;
-    A[S + 1] = (se23_real_t)-2.8e-45;
+    A[S + 1] = SE23_R(0);
     assert_int_equal(se23_cov_check(A, 3, S), SE23_OK);
+    A[S + 1] = (se23_real_t)-2.8e-45;
+    assert_int_equal(se23_cov_check(A, 3, S), SE23_ERR_NOT_PSD);
     A[S + 1] = (se23_real_t)-1e-30; /* a normal negative variance is still refused */
     assert_int_equal(se23_cov_check(A, 3, S), SE23_ERR_NOT_PSD);
 }

@@ -452,11 +452,13 @@ static void test_gauss_cov_propagate_rejects_bad_input_untouched(void **state)
 }
 
 /* Fuzzing (tests/fuzz/corpus/gauss/known-*): the covariance check admits
- * a variance down to -SE23_COV_ABS_TOL (twice the smallest normal float),
- * and a step scales that slack by its gain squared: a variance of -1e-250
- * (double; -1e-40 in float) through |v| = 1e172 (1e37) came back as about
- * -1e94 (-1e34) with SE23_OK. The step's bound counts the slack and
- * refuses it; nothing is written. */
+ * an eigenvalue down to -SE23_COV_ABS_TOL (twice the smallest normal
+ * float), and a step scales that slack by its gain squared: a variance of
+ * -1e-250 (double; -1e-40 in float) through |v| = 1e172 (1e37) came back
+ * as about -1e94 (-1e34) with SE23_OK. A negative variance is now refused
+ * by the check itself (issue 37, S4); the slack remains for an
+ * off-diagonal entry (eigenvalue -1e-250), and the step's bound counts it
+ * and refuses the step; nothing is written. */
 static void test_gauss_cov_propagate_refuses_an_amplified_tolerance(void **state)
 {
     (void)state;
@@ -466,12 +468,16 @@ static void test_gauss_cov_propagate_refuses_an_amplified_tolerance(void **state
     out0 = out;
     se23_identity(&U);
 #if SE23_CFG_DOUBLE
-    S0.m[0] = SE23_R(-1e-250);
+    const se23_real_t e = SE23_R(1e-250);
     U.v.v[1] = SE23_R(1e172);
 #else
-    S0.m[0] = SE23_R(-1e-40);
+    const se23_real_t e = SE23_R(1e-40);
     U.v.v[1] = SE23_R(1e37);
 #endif
+    S0.m[0] = -e;
+    assert_int_equal(se23_cov_check(S0.m, 9, 9), SE23_ERR_NOT_PSD);
+    S0.m[0] = SE23_R(0);
+    S0.m[1] = S0.m[9] = e;
     assert_int_equal(se23_cov_check(S0.m, 9, 9), SE23_OK);
     assert_int_equal(se23_gauss_cov_propagate(&S0, &U, SE23_R(0.01), &Q0, &out),
                      SE23_ERR_NONFINITE);
@@ -565,6 +571,49 @@ static void test_gauss_check_reports_each_defect(void **state)
     /* With n = 9 the bias block is not read. */
     bad.n = 9;
     assert_int_equal(se23_gauss_check(&bad), SE23_OK);
+    /* Regression (issue 37, S4): a negative variance is refused however
+     * small, alone (below the absolute tolerance) or beside a variance of
+     * 1 (within the relative one). */
+    memset(&bad.P, 0, sizeof bad.P);
+    bad.n = 15;
+    bad.P.m[0] = -SE23_R(1e-38);
+    assert_int_equal(se23_gauss_check(&bad), SE23_ERR_NOT_PSD);
+    bad.P.m[0] = SE23_R(1);
+    bad.P.m[S * 4 + 4] = -SE23_R(1e-10);
+    assert_int_equal(se23_gauss_check(&bad), SE23_ERR_NOT_PSD);
+    bad.P.m[S * 4 + 4] = SE23_R(0);
+    assert_int_equal(se23_gauss_check(&bad), SE23_OK);
+}
+
+/* Regression (issue 37, S1): a covariance accepted symmetric within the
+ * check's tolerance comes back exactly symmetric from both conversions
+ * (gauss.h: symmetric outputs), in place too. */
+static void test_gauss_carried_conversion_output_is_symmetric(void **state)
+{
+    (void)state;
+    se23t_rng_t rng;
+    se23t_rng_seed(&rng, 615);
+    se23_earth_model_t model;
+    assert_int_equal(se23_earth_model_init_wgs84(SE23_FRAME_NED, SE23_R(0.7), SE23_R(0),
+                                                 SE23_R(0.01), SE23_R(0.01), &model), SE23_OK);
+    for (int n = 9; n <= 15; n += 6) {
+        se23_gauss_t g, out;
+        gt_random_gauss(&rng, n, &g);
+        g.P.m[1] += SE23_R(SE23_CFG_COV_TOL) * SE23_R(0.25) * g.P.m[0];
+        g.P.m[S * (n - 1) + 2] += SE23_R(SE23_CFG_COV_TOL) * SE23_R(0.25) * g.P.m[0];
+        assert_int_equal(se23_gauss_check(&g), SE23_OK);
+        for (int dir = 0; dir < 2; ++dir) {
+            out = g;
+            const se23_status_t st = dir ? se23_gauss_to_carried(&model, &out, &out)
+                                         : se23_gauss_from_carried(&model, &g, &out);
+            assert_int_equal(st, SE23_OK);
+            for (int i = 0; i < n; ++i) {
+                for (int j = 0; j < i; ++j) {
+                    assert_true(out.P.m[S * i + j] == out.P.m[S * j + i]);
+                }
+            }
+        }
+    }
 }
 
 static void test_gauss_propagate_rejects_bad_input_untouched(void **state)
@@ -1084,6 +1133,7 @@ int main(void)
         cmocka_unit_test(test_gauss_predict_refuses_overflow_untouched),
         cmocka_unit_test(test_gauss_from_carried_m_matches_central_differences),
         cmocka_unit_test(test_gauss_carried_conversion_rejects_bad_input_untouched),
+        cmocka_unit_test(test_gauss_carried_conversion_output_is_symmetric),
         cmocka_unit_test(test_gauss_monte_carlo_nees_within_chi2_interval),
         cmocka_unit_test(test_gauss_null_arguments_return_err_null),
     };

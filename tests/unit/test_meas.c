@@ -461,8 +461,9 @@ static void test_meas_cov_check_tolerance_boundaries(void **state)
                          side ? SE23_ERR_NOT_SYMMETRIC : SE23_OK);
         assert_int_equal(se23_meas_zero_rate(&y, &l, &cov, &out),
                          side ? SE23_ERR_NOT_SYMMETRIC : SE23_OK);
-        /* diag(1, 1, -k tol): smallest eigenvalue -k tol s, s = 1. */
-        se23_mat3_t neg = {{{SE23_R(1), 0, 0}, {0, SE23_R(1), 0}, {0, 0, (se23_real_t)(-k * tol)}}};
+        /* (0, 1) = (1, 0) = 1 + k tol: smallest eigenvalue -k tol s, s = 1. */
+        const se23_real_t c = (se23_real_t)(1.0 + k * tol);
+        se23_mat3_t neg = {{{SE23_R(1), c, 0}, {c, SE23_R(1), 0}, {0, 0, SE23_R(1)}}};
         assert_int_equal(se23_meas_pos_nav(&T, &y, &l, &neg, &out),
                          side ? SE23_ERR_NOT_PSD : SE23_OK);
         assert_int_equal(se23_meas_zero_rate(&y, &l, &neg, &out),
