@@ -242,7 +242,11 @@ se23_status_t se23_ins_state(const se23_ins_t *ins, se23_gauss_t *out, int64_t *
     if ((ins->status & SE23_INS_ST_INITIALISED) == 0U) {
         return SE23_ERR_DIM;
     }
-    st = se23_gauss_from_carried(&ins->model, &ins->g, out);
+    /* never an SE23_OK for a state the check refuses (ins.h) */
+    st = se23_gauss_check(&ins->g);
+    if (st == SE23_OK) {
+        st = se23_gauss_from_carried(&ins->model, &ins->g, out);
+    }
     if (st == SE23_OK) {
         *t_ns = ins->t_ns;
     }

@@ -502,8 +502,12 @@ se23_ins_verdict_t se23_ins_gnss(se23_ins_t *ins, const se23_ins_gnss_t *fix);
 
 /**
  * out = the user's state (R, v, p, biases, covariance); t_ns its time.
- * @return SE23_ERR_DIM before the first state; SE23_ERR_NONFINITE if the
- *         conversion from the carried state would overflow (rotating
+ * @return SE23_ERR_DIM before the first state; the status of
+ *         se23_gauss_check if the state the filter holds fails it (every
+ *         update is checked before it is kept, but a covariance step is
+ *         trusted, and one within its rounding bound can still leave a
+ *         state outside the check: README "Fuzzing"); SE23_ERR_NONFINITE if
+ *         the conversion from the carried state would overflow (rotating
  *         Earth: Omega x p or the covariance's shear beyond the largest
  *         real, only for absurd states, se23_gauss_from_carried); otherwise
  *         SE23_OK. Nothing is written on error.
