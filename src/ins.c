@@ -11,10 +11,24 @@
  * float, and nothing physical is that uncertain. */
 #define FIX_SIGMA_MAX SE23_R(1e6)
 
+/* Gravity's bound [m/s^2] (WGS-84 normal gravity is at most 9.84 on the
+ * surface, less above it): a body whose specific force f the sensor
+ * measures (|f| <= accel_range) accelerates at |f + g| <= accel_range +
+ * 10, so no 1-sigma of its unknown acceleration (outage_accel) is larger. */
+#define GRAVITY_BOUND SE23_R(10)
+
 void se23_ins_count(uint32_t *c)
 {
     if (*c < UINT32_MAX) {
         *c += 1U;
+    }
+}
+
+void se23_ins_drop_pending(se23_ins_t *ins)
+{
+    if (ins->have_pending != 0) {
+        ins->have_pending = 0;
+        se23_ins_count(&ins->c.gnss_pending_dropped);
     }
 }
 
@@ -59,14 +73,20 @@ static se23_status_t config_check(const se23_ins_config_t *cfg)
     if (se23_all_finite(reals, n_reals) == 0) {
         return SE23_ERR_NONFINITE;
     }
-    /* every real but lat and the lever arm is a magnitude */
+    /* every real but lat and the lever arm is a magnitude; lat is judged
+     * by se23_earth_gravity_vec in se23_ins_setup, the rule (earth.h: |lat|
+     * <= pi/2 + SE23_EARTH_LAT_SLACK) se23_ins_preset_foot applies too */
     for (i = 0; i < n_reals; ++i) {
         if ((i != 6) && ((i < 12) || (i > 14)) && (reals[i] < SE23_R(0))) {
             return SE23_ERR_DOMAIN;
         }
     }
-    if ((se23_fabs(cfg->lat) > (SE23_R(0.5) * SE23_PI)) || (cfg->gyro_range <= SE23_R(0)) ||
-        (cfg->accel_range <= SE23_R(0)) || (cfg->max_outage > SE23_INS_MAX_OUTAGE) ||
+    /* The ranges bound every reading and bias estimate a step sees, the
+     * outage's 1-sigmas bound its inflation (ins.h). */
+    if ((cfg->gyro_range <= SE23_R(0)) || (cfg->gyro_range > SE23_INS_GYRO_RANGE_MAX) ||
+        (cfg->accel_range <= SE23_R(0)) || (cfg->accel_range > SE23_INS_ACCEL_RANGE_MAX) ||
+        (cfg->outage_accel > cfg->accel_range + GRAVITY_BOUND) ||
+        (cfg->outage_rate > cfg->gyro_range) || (cfg->max_outage > SE23_INS_MAX_OUTAGE) ||
         (is_flag(cfg->earth_rotation) == 0) || (is_flag(cfg->bias_states) == 0) ||
         (is_flag(cfg->zupt) == 0) || (cfg->gate_recover < 0) ||
         (cfg->zaru_after > SE23_INS_MAX_OUTAGE) || (cfg->floor_swing > SE23_INS_MAX_OUTAGE)) {
@@ -138,6 +158,7 @@ se23_status_t se23_ins_setup(const se23_ins_config_t *cfg, se23_ins_t *ins)
         ins->zupt_nis_sum = SE23_R(0);
         ins->replaying = 0;
         ins->fac_ready = 0;
+        ins->have_pending = 0;
         ins->c = none;
     }
     return SE23_OK;
@@ -154,7 +175,7 @@ void se23_ins_start(se23_ins_t *ins, int64_t t_ns, const se23_gauss_t *g)
     ins->have_last = 0;
     ins->streak = 0;
     ins->back_streak = 0;
-    ins->have_pending = 0;
+    se23_ins_drop_pending(ins); /* stamped for the state that ended */
     ins->last_fix_ns = -1;
     ins->gated_run = 0;
     ins->status = (ins->status & SE23_INS_ST_EARTH_RATE) |
@@ -220,6 +241,16 @@ se23_status_t se23_ins_init(se23_ins_t *ins, int64_t t_ns, const se23_gauss_t *g
     }
     if ((st == SE23_OK) && (p_diag_max(g) > SE23_INS_P_MAX)) {
         st = SE23_ERR_DOMAIN; /* an uncertainty no step could carry without overflow */
+    }
+    /* Means no sensor or vehicle has (ins.h, "Validation"): a bias beyond
+     * the sensor's range would put its every reading out of range; v and p
+     * beyond SE23_INS_VEL_MAX / SE23_INS_POS_MAX would take the steps
+     * toward overflow. */
+    if ((st == SE23_OK) && ((se23_ins_norm_within(&g->b_g, ins->cfg.gyro_range) == 0) ||
+                            (se23_ins_norm_within(&g->b_a, ins->cfg.accel_range) == 0) ||
+                            (se23_ins_norm_within(&g->T.v, SE23_INS_VEL_MAX) == 0) ||
+                            (se23_ins_norm_within(&g->T.p, SE23_INS_POS_MAX) == 0))) {
+        st = SE23_ERR_DOMAIN;
     }
     if (st == SE23_OK) {
         st = se23_gauss_to_carried(&ins->model, g, &ins->work);
@@ -313,7 +344,7 @@ static int clock_stepped_back(se23_ins_t *ins, int64_t t_ns, int64_t seq)
     ins->max_seq = seq;
     ins->last.dt = SE23_R(0); /* not a reading at the next interval's start: no interpolation */
     ins->last_fix_ns = -1;
-    ins->have_pending = 0;
+    se23_ins_drop_pending(ins); /* stamped by the old clock */
     ins->status |= SE23_INS_ST_DEGRADED;
     if (ins->cfg.zupt != 0) {
         se23_stationary_reset(&ins->det);
@@ -357,6 +388,7 @@ static se23_ins_verdict_t accept(se23_ins_t *ins, int64_t t_ns, int64_t seq,
     const int rest = se23_ins_rest_level(ins, s, t_ns - ins->t_ns);
     const se23_imu_sample_t prev = ins->last;
     if (se23_ins_step(ins, t_ns, s, rest) == 0) {
+        se23_ins_count(&ins->c.imu_failed); /* and filter_errors, by the step */
         return SE23_INS_FAILED;
     }
     ins->streak = 0;
@@ -373,7 +405,11 @@ se23_ins_verdict_t se23_ins_imu(se23_ins_t *ins, int64_t t_ns, int64_t seq,
 {
     se23_imu_sample_t s;
     const uint32_t live = SE23_INS_ST_INITIALISED | SE23_INS_ST_ALIGNING;
-    if ((ins == NULL) || (w_b == NULL) || (f_b == NULL)) {
+    if (ins == NULL) {
+        return SE23_INS_FAILED;
+    }
+    if ((w_b == NULL) || (f_b == NULL)) {
+        se23_ins_count(&ins->c.imu_failed);
         return SE23_INS_FAILED;
     }
     if ((ins->status & live) == 0U) {
@@ -385,13 +421,13 @@ se23_ins_verdict_t se23_ins_imu(se23_ins_t *ins, int64_t t_ns, int64_t seq,
          * (ins->t_ns >= 0: t_ns - ins->t_ns cannot overflow) */
         count_missing(ins, seq, (t_ns > ins->t_ns) && (t_ns - ins->t_ns > ins->max_gap_ns));
     }
-    if ((t_ns < 0) || (seq < 0)) {
-        se23_ins_count(&ins->c.imu_bad_time); /* outside the clock's domain */
-        return SE23_INS_BAD_TIME;
-    }
     if ((se23_all_finite(w_b->v, 3) == 0) || (se23_all_finite(f_b->v, 3) == 0)) {
         se23_ins_count(&ins->c.imu_nonfinite);
         return SE23_INS_NONFINITE;
+    }
+    if ((t_ns < 0) || (seq < 0)) {
+        se23_ins_count(&ins->c.imu_bad_time); /* outside the clock's domain */
+        return SE23_INS_BAD_TIME;
     }
     s.w_ib_b = *w_b;
     s.f_b = *f_b;
@@ -431,27 +467,29 @@ static int sigma_ok(const se23_vec3_t *s)
     return 1;
 }
 
-/* Nonzero if every field fix states is finite and its sigmas usable
- * (NaN fails the sigma test too). */
+/* Nonzero if every field fix states is finite, within the bounds of a
+ * state (SE23_INS_POS_MAX, SE23_INS_VEL_MAX: a gate reset makes it the
+ * state), and its sigmas usable (NaN fails the sigma test too). */
 static int fix_valid(const se23_ins_gnss_t *fix)
 {
     if ((fix->t_ns < 0) || (se23_all_finite(fix->p_n.v, 3) == 0) ||
+        (se23_ins_norm_within(&fix->p_n, SE23_INS_POS_MAX) == 0) ||
         (sigma_ok(&fix->sigma_p) == 0)) {
         return 0;
     }
     if ((fix->has_vel != 0) &&
-        ((se23_all_finite(fix->v_n.v, 3) == 0) || (sigma_ok(&fix->sigma_v) == 0))) {
+        ((se23_all_finite(fix->v_n.v, 3) == 0) ||
+         (se23_ins_norm_within(&fix->v_n, SE23_INS_VEL_MAX) == 0) ||
+         (sigma_ok(&fix->sigma_v) == 0))) {
         return 0;
     }
     return 1;
 }
 
-se23_ins_verdict_t se23_ins_gnss(se23_ins_t *ins, const se23_ins_gnss_t *fix)
+/* The verdict of a fix that is not NULL (se23_ins_gnss). */
+static se23_ins_verdict_t judge_fix(se23_ins_t *ins, const se23_ins_gnss_t *fix)
 {
     se23_ins_verdict_t v;
-    if ((ins == NULL) || (fix == NULL)) {
-        return SE23_INS_FAILED;
-    }
     if (((ins->status & SE23_INS_ST_INITIALISED) == 0U) ||
         ((ins->status & SE23_INS_ST_LOST) != 0U)) {
         se23_ins_count(&ins->c.gnss_early);
@@ -464,9 +502,7 @@ se23_ins_verdict_t se23_ins_gnss(se23_ins_t *ins, const se23_ins_gnss_t *fix)
     /* ahead: waits for the state (fix->t_ns >= 0: the difference cannot
      * overflow, ins->t_ns + half_ns could) */
     if (fix->t_ns - ins->half_ns > ins->t_ns) {
-        if (ins->have_pending != 0) {
-            se23_ins_count(&ins->c.gnss_pending_dropped);
-        }
+        se23_ins_drop_pending(ins); /* replaced */
         ins->pending = *fix;
         ins->have_pending = 1;
         return SE23_INS_PENDING;
@@ -482,6 +518,21 @@ se23_ins_verdict_t se23_ins_gnss(se23_ins_t *ins, const se23_ins_gnss_t *fix)
         }
     } else {
         v = se23_ins_fuse_delayed(ins, fix);
+    }
+    return v;
+}
+
+se23_ins_verdict_t se23_ins_gnss(se23_ins_t *ins, const se23_ins_gnss_t *fix)
+{
+    se23_ins_verdict_t v = SE23_INS_FAILED;
+    if (ins == NULL) {
+        return v;
+    }
+    if (fix != NULL) {
+        v = judge_fix(ins, fix);
+    }
+    if (v == SE23_INS_FAILED) {
+        se23_ins_count(&ins->c.gnss_failed); /* a failed update: also in filter_errors */
     }
     return v;
 }

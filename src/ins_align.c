@@ -32,7 +32,8 @@ static se23_status_t align_check(const se23_ins_t *ins, const se23_ins_align_t *
                (a->sigma_ba < SE23_R(0)) || (a->duration < SE23_R(0)) ||
                (a->duration > SE23_INS_MAX_OUTAGE) || (a->sigma_p > SE23_R(1e6)) ||
                (a->sigma_v > SE23_R(1e6)) || (a->sigma_yaw > SE23_R(1e6)) ||
-               (a->sigma_bg > SE23_R(1e6)) || (a->sigma_ba > SE23_R(1e6))) {
+               (a->sigma_bg > SE23_R(1e6)) || (a->sigma_ba > SE23_R(1e6)) ||
+               (se23_ins_norm_within(&a->p_n, SE23_INS_POS_MAX) == 0)) {
         st = SE23_ERR_DOMAIN;
     } else {
         /* usable */
@@ -51,6 +52,7 @@ se23_status_t se23_ins_align(se23_ins_t *ins, const se23_ins_align_t *a)
         return st;
     }
     ins->align = *a;
+    se23_ins_drop_pending(ins); /* stamped for the state that ends here */
     ins->status = (ins->status & SE23_INS_ST_EARTH_RATE) | SE23_INS_ST_ALIGNING;
     se23_stationary_reset(&ins->det);
     se23_ins_align_reset_sums(ins);

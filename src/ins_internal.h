@@ -36,12 +36,25 @@ void se23_ins_count(uint32_t *c);
 /** c += k (k >= 0), saturating. */
 void se23_ins_count_add(uint32_t *c, int64_t k);
 
+/** Drops the pending fix, if any, counting it in gnss_pending_dropped
+ *  (ins.h, "GNSS": every fix ends in one gnss_ counter). */
+void se23_ins_drop_pending(se23_ins_t *ins);
+
+/** Nonzero if |x| <= max (max >= 0 and max^2 finite); zero for a NaN or a
+ *  |x|^2 that overflows. */
+static inline int se23_ins_norm_within(const se23_vec3_t *x, se23_real_t max)
+{
+    const se23_real_t n2 = (x->v[0] * x->v[0]) + (x->v[1] * x->v[1]) + (x->v[2] * x->v[2]);
+    return (n2 <= (max * max)) ? 1 : 0;
+}
+
 /** Half the nominal sample interval [ns]: the tolerance of "now". */
 int64_t se23_ins_half_sample_ns(const se23_ins_t *ins);
 
 /**
  * Starts propagating from the model-coordinate state g at time t_ns, seq 0:
- * clears the outage, GNSS, ring and factor bookkeeping.
+ * clears the outage, GNSS (a pending fix is dropped, counted), ring and
+ * factor bookkeeping.
  */
 void se23_ins_start(se23_ins_t *ins, int64_t t_ns, const se23_gauss_t *g);
 

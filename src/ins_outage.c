@@ -2,12 +2,19 @@
  * ins.h, "Outage". */
 #include "ins_internal.h"
 
-/* P(i, i) += var for the three axes of the error block at first. */
+/* P(i, i) += var for the three axes of the error block at first, raising
+ * none above SE23_INS_P_MAX (one already above is left as it is; ins.h,
+ * "Outage"): the covariance stays finite however long the outages and
+ * however many. */
 static void inflate(se23_gauss_t *g, int first, se23_real_t var)
 {
     int i;
     for (i = first; i < first + 3; ++i) {
-        g->P.m[se23_ins_idx(i, i)] += var;
+        se23_real_t *d = &g->P.m[se23_ins_idx(i, i)];
+        const se23_real_t room = SE23_INS_P_MAX - *d;
+        if (room > SE23_R(0)) {
+            *d += (var < room) ? var : room;
+        }
     }
 }
 
@@ -37,10 +44,7 @@ static void carry_across(se23_ins_t *ins, se23_real_t gap)
     inflate(&ins->g, SE23_IDX_NU, sv * sv);
     inflate(&ins->g, SE23_IDX_RHO, sp * sp);
     ins->status |= SE23_INS_ST_DEGRADED;
-    if (ins->have_pending != 0) { /* a fix from inside the outage: cannot be placed */
-        ins->have_pending = 0;
-        se23_ins_count(&ins->c.gnss_pending_dropped);
-    }
+    se23_ins_drop_pending(ins); /* a fix from inside the outage: cannot be placed */
 }
 
 /*
@@ -88,6 +92,7 @@ se23_ins_verdict_t se23_ins_over_gap(se23_ins_t *ins, int64_t t_ns, int64_t seq)
     if (gap > ins->cfg.max_outage) {
         ins->status |= SE23_INS_ST_LOST;
         ins->status &= ~SE23_INS_ST_INITIALISED;
+        se23_ins_drop_pending(ins); /* its state is lost */
         return SE23_INS_OUTAGE;
     }
     carry_across(ins, gap);

@@ -35,6 +35,8 @@ se23_status_t se23_ins_preset_foot(se23_real_t rate_hz, se23_real_t lat,
     if (!((rate_hz >= SE23_R(50)) && (rate_hz <= SE23_R(10000)))) {
         return SE23_ERR_DOMAIN;
     }
+    /* lat: se23_earth_gravity's rule (earth.h), the one se23_ins_setup
+     * applies, so the configuration below always passes it */
     st = se23_earth_gravity(lat, SE23_R(0), &g);
     if (st != SE23_OK) {
         return st;

@@ -21,6 +21,7 @@
  * Screening of IMU samples, in this order; each rejection is counted in
  * its own counter and leaves the state untouched (se23_ins_imu returns the
  * verdict):
+ *   a NULL reading                            -> imu_failed
  *   no state yet (not initialised)            -> imu_early
  *   NaN/Inf in a reading                      -> imu_nonfinite
  *   t < 0 or seq < 0                          -> imu_bad_time
@@ -30,6 +31,9 @@
  *   t <= t_last otherwise                     -> imu_bad_time (see "Clock")
  *   dt > max_gap                              -> imu_bad_dt (see "Outage")
  * While aligning, a finite in-range sample goes to the alignment (imu_align).
+ * A sample that passes is integrated (imu_used), or, if the library's step
+ * fails (it should not: setup and init bound what a step sees), refused
+ * with the state kept (imu_failed and filter_errors, SE23_INS_FAILED).
  * A received sample (whatever its verdict) within max_gap of the last
  * whose seq exceeds the highest seen by
  * k + 1 adds k to imu_missing, provided k is no more than the samples
@@ -60,6 +64,11 @@
  * model's dt_max), the covariance is inflated by the outage dynamics
  * (outage_rate, outage_accel: 1-sigma unknown rate and acceleration) and
  * time_resets counts it; status SE23_INS_ST_DEGRADED until the next fix.
+ * The inflation raises no variance above SE23_INS_P_MAX (one already above
+ * is left as it is): a position or velocity known to no better than 1e6 m
+ * or m/s is unknown, and the cap keeps the covariance finite for any
+ * outage and any number of them (setup bounds outage_accel and
+ * outage_rate by the sensor ranges as well).
  * A longer outage sets SE23_INS_ST_LOST: the filter then waits for a new
  * init or alignment.
  *
@@ -67,12 +76,16 @@
  * among themselves (consecutive seq, 0 < dt <= max_gap between them) mean
  * the clock stepped back and stays there: the filter re-bases its time on
  * the new clock (time_resets, status DEGRADED, verdict SE23_INS_OUTAGE),
- * keeping the state; fixes are then judged by the new clock.
+ * keeping the state; fixes are then judged by the new clock (a pending fix,
+ * stamped by the old one, is dropped: gnss_pending_dropped).
  *
  * GNSS. A fix (position, optionally velocity, of an antenna at lever arm
  * l_b: h = p + R l and v + R (w x l), kalman.h) is fused at its own time:
  *  - stamped within half a sample of the state: applied now;
- *  - ahead of the state: held in a one-slot buffer until the state reaches it;
+ *  - ahead of the state: held in a one-slot buffer until the state reaches
+ *    it; a held fix that is not fused is counted in gnss_pending_dropped
+ *    (replaced by a newer one, or dropped by an outage, a clock step, an
+ *    init or an alignment: it belongs to the state or the clock that ended);
  *  - in the past, within delay_horizon: the filter restarts from a stored
  *    snapshot older than the fix, replays the stored samples up to the fix
  *    (with the zero-velocity updates they had), applies it and replays to
@@ -92,8 +105,8 @@
  * any fix within the horizon has a snapshot before it. Fusing a fix stamped
  * d seconds late costs the replay of up to d + delay_horizon seconds of
  * samples (prediction and the zero-velocity updates), in that call.
- * Memory: sizeof(se23_ins_t) = 17,488 B + SE23_INS_RING x 72 B in double,
- * 8,968 B + SE23_INS_RING x 48 B in float (26,704 / 15,112 B with the
+ * Memory: sizeof(se23_ins_t) = 17,496 B + SE23_INS_RING x 72 B in double,
+ * 8,976 B + SE23_INS_RING x 48 B in float (26,712 / 15,120 B with the
  * default ring; README "The navigation filter"; test_ins.c asserts it),
  * the kernels' work areas included (1,512 / 756 B, kept here and not on
  * the stack of the calls);
@@ -151,6 +164,11 @@
  * se23_gauss_check), every sample and fix where it enters. The filter's own
  * state is trusted. A library step that fails (it should not, for checked
  * inputs) is counted in filter_errors and leaves the state as it was.
+ * Physical bounds keep the steps away from overflow: sensor ranges at most
+ * SE23_INS_ACCEL_RANGE_MAX and SE23_INS_GYRO_RANGE_MAX, bias estimates
+ * within the ranges, positions within SE23_INS_POS_MAX and velocities
+ * within SE23_INS_VEL_MAX (states, alignments and fixes), variances of an
+ * initial state and of outage inflation at most SE23_INS_P_MAX.
  *
  * Functions index:
  *   se23_ins_setup        check a configuration, empty filter
@@ -200,6 +218,32 @@ extern "C" {
 /** Largest outage a configuration may ask to carry across [s]. */
 #define SE23_INS_MAX_OUTAGE SE23_R(600)
 
+/** Largest accelerometer range a configuration may state [m/s^2], about
+ *  1,000 g: above the widest-range accelerometers made for navigation
+ *  (consumer MEMS 16 g, tactical 40-70 g, high-g parts 200-400 g) and any
+ *  sustained vehicle acceleration (a few hundred m/s^2 at most). It bounds
+ *  the accelerometer bias (|b_a| <= accel_range) and outage_accel
+ *  (<= accel_range + 10 m/s^2: the acceleration f + g of a body whose
+ *  specific force the sensor could measure). */
+#define SE23_INS_ACCEL_RANGE_MAX SE23_R(1e4)
+
+/** Largest gyro range a configuration may state [rad/s]: above the widest
+ *  gyro ranges made (+-20,000 deg/s, 350 rad/s) and the spin of a rifled
+ *  shell (300 rev/s, 1,900 rad/s). It bounds the gyro bias
+ *  (|b_g| <= gyro_range) and outage_rate (<= gyro_range). */
+#define SE23_INS_GYRO_RANGE_MAX SE23_R(1e4)
+
+/** Largest |p| [m] of an initial state, an alignment or a fix: beyond the
+ *  Moon's orbit (3.8e8 m), where a navigation frame tied to a latitude
+ *  means nothing; with SE23_INS_VEL_MAX and bounded sensor ranges the mean
+ *  steps stay far below the largest float for any run (a century at 2e4
+ *  m/s^2 reaches 1e23 m). */
+#define SE23_INS_POS_MAX SE23_R(1e9)
+
+/** Largest |v| [m/s] of an initial state or a fix: ten times the Earth's
+ *  escape velocity (11.2 km/s). */
+#define SE23_INS_VEL_MAX SE23_R(1e5)
+
 /** Status bits (se23_ins_t.status). */
 #define SE23_INS_ST_INITIALISED 0x001U /**< a state is being propagated */
 #define SE23_INS_ST_GNSS_AIDED 0x002U  /**< at least one GNSS fix applied */
@@ -216,7 +260,8 @@ extern "C" {
 typedef enum {
     SE23_INS_USED = 0,         /**< integrated (sample) or fused (fix) */
     SE23_INS_EARLY = 1,        /**< no state yet */
-    SE23_INS_NONFINITE = 2,    /**< NaN/Inf, or a fix's bad sigma or negative time */
+    SE23_INS_NONFINITE = 2,    /**< NaN/Inf, or a fix's bad sigma, negative time or
+                                    absurd position or velocity */
     SE23_INS_RANGE = 3,        /**< beyond the sensor range */
     SE23_INS_DUPLICATE = 4,    /**< same seq as the last sample */
     SE23_INS_OUT_OF_ORDER = 5, /**< older seq */
@@ -232,16 +277,24 @@ typedef enum {
 
 /** Counters (saturating at UINT32_MAX). Every sample ends in exactly one
  *  imu_ counter but imu_missing and imu_seq_jumps; every fix in one gnss_
- *  counter but gnss_delayed and gate_resets (a reset fix is also gated). */
+ *  counter but gnss_delayed and gate_resets (a reset fix is also gated; a
+ *  held fix ends in the counter of its verdict when it is fused, or in
+ *  gnss_pending_dropped); a call the library refuses (SE23_INS_FAILED) in
+ *  imu_failed / gnss_failed (none with a NULL filter). */
 typedef struct {
     uint32_t imu_used, imu_early, imu_align, imu_nonfinite, imu_range, imu_duplicate;
     uint32_t imu_out_of_order, imu_bad_time, imu_bad_dt;
+    uint32_t imu_failed;    /**< refused: a NULL reading, or a failed step (that
+                             *   also in filter_errors); state kept */
     uint32_t imu_missing;   /**< samples lost in transit (seq gaps) */
     uint32_t imu_seq_jumps; /**< seq jumps too large to be losses */
     uint32_t gnss_used;
     uint32_t gnss_delayed; /**< of gnss_used: fused late, by replay */
-    uint32_t gnss_pending_dropped, gnss_nonfinite;
+    uint32_t gnss_pending_dropped; /**< held fixes never fused ("GNSS") */
+    uint32_t gnss_nonfinite;
     uint32_t gnss_early, gnss_stale, gnss_gated, gate_resets;
+    uint32_t gnss_failed;   /**< refused: a NULL fix, or a failed update (that
+                             *   also in filter_errors); state kept */
     uint32_t course_headings;  /**< headings set from the GNSS course */
     uint32_t zupt_used, zaru_used;
     uint32_t floor_used;       /**< floor updates applied (one per stance) */
@@ -429,9 +482,12 @@ se23_real_t se23_ins_detector_threshold(int window, se23_real_t z);
  * at rate_hz on a foot, latitude lat (for gravity): flat Earth, 15 states,
  * ZUPT at stance, ZARU after 0.5 s at rest, alignment from the first
  * second at rest, no GNSS. Every value and why it was chosen is in
- * src/ins_preset.c. Pass cfg to se23_ins_setup and align to se23_ins_align.
+ * src/ins_preset.c. Pass cfg to se23_ins_setup and align to se23_ins_align:
+ * a configuration the preset returns always passes se23_ins_setup (both
+ * judge lat by se23_earth_gravity's rule).
  * @return SE23_ERR_NULL; SE23_ERR_DOMAIN unless 50 <= rate_hz <= 10000;
- *         the statuses of se23_earth_gravity (lat). Nothing is written on
+ *         the statuses of se23_earth_gravity (lat: SE23_ERR_DOMAIN if
+ *         |lat| > pi/2 + SE23_EARTH_LAT_SLACK). Nothing is written on
  *         error.
  */
 se23_status_t se23_ins_preset_foot(se23_real_t rate_hz, se23_real_t lat,
@@ -441,7 +497,11 @@ se23_status_t se23_ins_preset_foot(se23_real_t rate_hz, se23_real_t lat,
  * ins = an empty filter (no state) for cfg.
  * @return SE23_ERR_NULL; SE23_ERR_NONFINITE (a non-finite field);
  *         SE23_ERR_DOMAIN (a negative noise, range, sigma or gate;
- *         max_outage above SE23_INS_MAX_OUTAGE; |lat| > pi/2;
+ *         max_outage above SE23_INS_MAX_OUTAGE; accel_range above
+ *         SE23_INS_ACCEL_RANGE_MAX, gyro_range above
+ *         SE23_INS_GYRO_RANGE_MAX; outage_accel above accel_range + 10
+ *         m/s^2, outage_rate above gyro_range; |lat| > pi/2 +
+ *         SE23_EARTH_LAT_SLACK, se23_earth_gravity's rule;
  *         bias_states, earth_rotation or zupt not 0/1); SE23_ERR_DT
  *         (dt_nominal below 1 ns, max_gap below dt_nominal or above
  *         SE23_CFG_DT_MAX); SE23_ERR_DIM (the ring cannot hold
@@ -457,20 +517,24 @@ se23_status_t se23_ins_setup(const se23_ins_config_t *cfg, se23_ins_t *ins);
  * kept is exactly symmetric: g's lower triangle, the one the check proves
  * positive semidefinite, mirrored (the check accepts an asymmetry within
  * its tolerance).
+ * A pending fix is dropped (gnss_pending_dropped).
  * @return SE23_ERR_NULL, SE23_ERR_DIM (n), SE23_ERR_DT (t_ns < 0), the
  *         statuses of se23_gauss_check, SE23_ERR_DOMAIN (a variance above
- *         SE23_INS_P_MAX); on error the filter is unchanged but for
- *         init_rejected.
+ *         SE23_INS_P_MAX, |b_g| above gyro_range, |b_a| above accel_range,
+ *         |v| above SE23_INS_VEL_MAX, |p| above SE23_INS_POS_MAX); on
+ *         error the filter is unchanged but for init_rejected.
  */
 se23_status_t se23_ins_init(se23_ins_t *ins, int64_t t_ns, const se23_gauss_t *g);
 
 /**
  * Starts a static alignment (file comment): the state is set once the
- * detector has seen a->duration seconds (at least a window) of rest.
+ * detector has seen a->duration seconds (at least a window) of rest. A
+ * pending fix is dropped (gnss_pending_dropped).
  * @return SE23_ERR_NULL; SE23_ERR_DOMAIN (detector off in the
  *         configuration, gyrocompass on flat Earth, a sigma <= 0 or above
  *         1e6, duration < 0 or above SE23_INS_MAX_OUTAGE, course_speed < 0,
- *         a course with gyrocompass or with course_sigma outside (0, 3]);
+ *         a course with gyrocompass or with course_sigma outside (0, 3],
+ *         |p_n| above SE23_INS_POS_MAX);
  *         SE23_ERR_NONFINITE; on error the filter is unchanged but for
  *         init_rejected.
  */
@@ -484,7 +548,8 @@ se23_status_t se23_ins_align(se23_ins_t *ins, const se23_ins_align_t *a);
  *         SE23_INS_OUT_OF_ORDER, SE23_INS_BAD_TIME (also t_ns < 0,
  *         seq < 0), SE23_INS_BAD_DT, SE23_INS_OUTAGE (confirmed a jump or
  *         a clock step), SE23_INS_FAILED (NULL argument, or a library
- *         step failed: state kept), each counted.
+ *         step failed: state kept), each counted (SE23_INS_FAILED in
+ *         imu_failed, but for a NULL ins).
  */
 se23_ins_verdict_t se23_ins_imu(se23_ins_t *ins, int64_t t_ns, int64_t seq,
                                 const se23_vec3_t *w_b, const se23_vec3_t *f_b);
@@ -494,9 +559,12 @@ se23_ins_verdict_t se23_ins_imu(se23_ins_t *ins, int64_t t_ns, int64_t seq,
  * @return SE23_INS_USED (fused now or at its own time), SE23_INS_PENDING
  *         (ahead of the state: held), SE23_INS_RESET (gate recovery);
  *         SE23_INS_EARLY, SE23_INS_NONFINITE (NaN/Inf, t_ns < 0, a sigma
- *         <= 0 or > 1e6), SE23_INS_STALE (beyond the horizon or not after
+ *         <= 0 or > 1e6, |p_n| above SE23_INS_POS_MAX, |v_n| above
+ *         SE23_INS_VEL_MAX), SE23_INS_STALE (beyond the horizon or not after
  *         the last fused fix), SE23_INS_GATED, SE23_INS_FAILED (NULL
- *         argument or a failed update: state kept), each counted.
+ *         argument or a failed update: state kept), each counted
+ *         (SE23_INS_FAILED in gnss_failed, but for a NULL ins; PENDING
+ *         when the held fix is fused or dropped).
  */
 se23_ins_verdict_t se23_ins_gnss(se23_ins_t *ins, const se23_ins_gnss_t *fix);
 

@@ -11,12 +11,16 @@
  *    ones: an initial velocity of 1e307 m/s, README "Fuzzing") leaves the
  *    state and its time as they were;
  *  - every counter is where it was or above; each se23_ins_imu call ends
- *    in exactly one imu_ counter (imu_missing and imu_seq_jumps aside);
+ *    in exactly one imu_ counter (imu_missing and imu_seq_jumps aside),
+ *    FAILED ones in imu_failed; every fix handed in is in exactly one
+ *    gnss_ counter or held (gnss_delayed and gate_resets aside);
  *  - init and align that fail leave the filter as it was but for
  *    init_rejected (the scratch fields meas and work aside);
- *  - with SE23_INS_ST_INITIALISED, se23_ins_state gives SE23_OK (or, for
- *    an absurd state whose user coordinates overflow, SE23_ERR_NONFINITE
- *    with nothing written), a state of the configured dimension that
+ *  - with SE23_INS_ST_INITIALISED, se23_ins_state gives SE23_OK only for
+ *    a held state that passes se23_gauss_check (else that check's status,
+ *    the known finding of fuzz.h after a step, or, for an absurd state
+ *    whose user coordinates overflow, SE23_ERR_NONFINITE; nothing written
+ *    on either), a state of the configured dimension that
  *    passes se23_gauss_check (but for the
  *    known finding of fuzz.h, with a bound from the configuration's ranges
  *    and the largest variance), and the time of the filter; without it,
@@ -61,6 +65,7 @@ typedef struct {
     double d_before;   /* largest variance before the call */
     se23_gauss_t g_before;
     unsigned long failed; /* FAILED verdicts seen */
+    uint32_t fixes;       /* se23_ins_gnss calls with a fix */
     int tainted;          /* the known finding of fuzz.h made the state invalid */
 } ctx_t;
 
@@ -166,7 +171,25 @@ static void override_align(fz_t *f, se23_ins_align_t *a)
 static uint32_t imu_sum(const se23_ins_counters_t *c)
 {
     return c->imu_used + c->imu_early + c->imu_align + c->imu_nonfinite + c->imu_range +
-           c->imu_duplicate + c->imu_out_of_order + c->imu_bad_time + c->imu_bad_dt;
+           c->imu_duplicate + c->imu_out_of_order + c->imu_bad_time + c->imu_bad_dt +
+           c->imu_failed;
+}
+
+/* The gnss_ counters a fix ends in (all but gnss_delayed, a part of
+ * gnss_used, and gate_resets, a part of gnss_gated: ins.h). */
+static uint32_t gnss_sum(const se23_ins_counters_t *c)
+{
+    return c->gnss_used + c->gnss_pending_dropped + c->gnss_nonfinite + c->gnss_early +
+           c->gnss_stale + c->gnss_gated + c->gnss_failed;
+}
+
+/* Every fix handed in is in exactly one gnss_ counter, or held. */
+static void check_fixes(const ctx_t *c, const char *what)
+{
+    const uint32_t held = c->ins.have_pending ? 1u : 0u;
+    FZ_REQUIRE(gnss_sum(&c->ins.c) + held == c->fixes,
+               "%s: %u fixes handed in, %u counted, %u held", what, (unsigned)c->fixes,
+               (unsigned)gnss_sum(&c->ins.c), (unsigned)held);
 }
 
 static void check_counters(const se23_ins_counters_t *was, const se23_ins_counters_t *now,
@@ -223,7 +246,19 @@ static void check_state(ctx_t *c, const char *what)
         }
         return;
     }
-    FZ_REQUIRE(st == SE23_OK, "%s: state of an initialised filter: %d", what, st);
+    if (st != SE23_OK) { /* the held state fails the check: a step's known finding */
+        FZ_REQUIRE(se23_gauss_check(&c->ins.g) == st, "%s: state of an initialised filter: %d",
+                   what, st);
+        FZ_REQUIRE(fz_untouched(&out, sizeof out) && fz_untouched(&t, sizeof t),
+                   "%s: state wrote on error", what);
+        if (!c->tainted) {
+            c->tainted = !fz_check_cov_step(&c->ins.g, ins_bound(c, c->d_before), what);
+        }
+        return;
+    }
+    /* SE23_OK: the held state passes the check, always (ins.h) */
+    FZ_REQUIRE(se23_gauss_check(&c->ins.g) == SE23_OK, "%s: OK for a state the check refuses",
+               what);
     FZ_REQUIRE(out.n == (c->ins.cfg.bias_states ? 15 : 9), "%s: state of dimension %d", what,
                out.n);
     if (!c->tainted) {
@@ -351,6 +386,7 @@ static void do_init(fz_t *f, ctx_t *c)
         c->seq = fz_u8(f) < 224 ? 0 : fz_i64(f);
     }
     check_counters(&c->before.c, &c->ins.c, "init");
+    check_fixes(c, "init");
     check_state(c, "init");
 }
 
@@ -431,11 +467,11 @@ static void do_imu(fz_t *f, ctx_t *c)
             FZ_REQUIRE(c->ins.c.filter_errors > was.filter_errors,
                        "imu: FAILED, not counted in filter_errors");
             c->failed++;
-        } else {
-            FZ_REQUIRE(imu_sum(&c->ins.c) == imu_sum(&was) + 1u,
-                       "imu: the sample ended in %d imu_ counters (verdict %d)",
-                       (int)(imu_sum(&c->ins.c) - imu_sum(&was)), (int)v);
         }
+        FZ_REQUIRE(imu_sum(&c->ins.c) == imu_sum(&was) + 1u,
+                   "imu: the sample ended in %d imu_ counters (verdict %d)",
+                   (int)(imu_sum(&c->ins.c) - imu_sum(&was)), (int)v);
+        check_fixes(c, "imu");
         /* USED: integrated (imu_used), or the sample that completed an
          * alignment (imu_align) */
         FZ_REQUIRE(v != SE23_INS_USED || c->ins.c.imu_used == was.imu_used + 1u ||
@@ -480,6 +516,7 @@ static void do_gnss(fz_t *f, ctx_t *c)
     fix.has_vel = fz_u8(f) < 240 ? (m & 1) : fz_int(f);
     note_before(c);
     v = se23_ins_gnss(&c->ins, &fix);
+    c->fixes++;
     FZ_REQUIRE(v >= SE23_INS_USED && v <= SE23_INS_FAILED && v != SE23_INS_RANGE &&
                    v != SE23_INS_DUPLICATE && v != SE23_INS_OUT_OF_ORDER &&
                    v != SE23_INS_BAD_TIME && v != SE23_INS_BAD_DT && v != SE23_INS_OUTAGE,
@@ -490,6 +527,7 @@ static void do_gnss(fz_t *f, ctx_t *c)
         c->failed++;
     }
     check_counters(&was, &c->ins.c, "gnss");
+    check_fixes(c, "gnss");
     check_state(c, "gnss");
 }
 

@@ -40,7 +40,7 @@ typedef struct {
 } insr_factor_t;
 
 /** Number of counters (se23_ins_counters_t is uint32_t fields only). */
-#define INSR_N_COUNTERS 27
+#define INSR_N_COUNTERS 29
 /** Index of counter `field` of se23_ins_counters_t in insr_check_t.c. */
 #define INSR_CIDX(field) ((int)(offsetof(se23_ins_counters_t, field) / sizeof(uint32_t)))
 

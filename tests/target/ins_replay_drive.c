@@ -172,11 +172,11 @@ void insr_flatten(const se23_ins_config_t *c, const se23_ins_align_t *a,
 
 const char *const insr_counter_name[INSR_N_COUNTERS] = {
     "imu_used",       "imu_early",   "imu_align",   "imu_nonfinite",  "imu_range",
-    "imu_duplicate",  "imu_out_of_order", "imu_bad_time", "imu_bad_dt", "imu_missing",
-    "imu_seq_jumps",  "gnss_used",   "gnss_delayed", "gnss_pending_dropped",
+    "imu_duplicate",  "imu_out_of_order", "imu_bad_time", "imu_bad_dt", "imu_failed",
+    "imu_missing",    "imu_seq_jumps",  "gnss_used",   "gnss_delayed", "gnss_pending_dropped",
     "gnss_nonfinite", "gnss_early",  "gnss_stale",  "gnss_gated",     "gate_resets",
-    "course_headings", "zupt_used",  "zaru_used",   "floor_used",     "floor_levels",
-    "time_resets",    "filter_errors", "init_rejected"};
+    "gnss_failed",    "course_headings", "zupt_used",  "zaru_used",   "floor_used",
+    "floor_levels",   "time_resets",    "filter_errors", "init_rejected"};
 
 /* se23_ins_counters_t must be exactly the INSR_N_COUNTERS uint32_t named above. */
 typedef char insr_counters_are_uint32[(sizeof(se23_ins_counters_t) ==

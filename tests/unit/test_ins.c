@@ -16,6 +16,28 @@
 
 static se23_ins_t ins, copy; /* large: static */
 
+/* Every imu_ counter a sample can end in (ins.h: exactly one of them). */
+static uint32_t imu_sum(const se23_ins_counters_t *c)
+{
+    return c->imu_used + c->imu_early + c->imu_align + c->imu_nonfinite + c->imu_range +
+           c->imu_duplicate + c->imu_out_of_order + c->imu_bad_time + c->imu_bad_dt +
+           c->imu_failed;
+}
+
+/* Every gnss_ counter a fix can end in (ins.h: exactly one of them). */
+static uint32_t gnss_sum(const se23_ins_counters_t *c)
+{
+    return c->gnss_used + c->gnss_pending_dropped + c->gnss_nonfinite + c->gnss_early +
+           c->gnss_stale + c->gnss_gated + c->gnss_failed;
+}
+
+/* A value that made the filter's steps overflow (fuzz_ins, issue 37). */
+#if SE23_CFG_DOUBLE
+#define HUGE_MEAN 1e300
+#else
+#define HUGE_MEAN 1e30
+#endif
+
 static void setup_init(int bias)
 {
     se23_ins_config_t c;
@@ -57,6 +79,17 @@ static void m_floor_no_zupt(se23_ins_config_t *c)
 static void m_floor_neg(se23_ins_config_t *c) { c->floor_sigma = SE23_R(-0.01); }
 static void m_floor_nan(se23_ins_config_t *c) { c->floor_step = (se23_real_t)NAN; }
 static void m_floor_swing(se23_ins_config_t *c) { c->floor_swing = SE23_INS_MAX_OUTAGE * SE23_R(2); }
+/* the physical bounds (ins.h): sensor ranges, the outage's 1-sigmas */
+static void m_accel_range(se23_ins_config_t *c)
+{
+    c->accel_range = SE23_INS_ACCEL_RANGE_MAX * (se23_real_t)1.001;
+}
+static void m_gyro_range(se23_ins_config_t *c)
+{
+    c->gyro_range = SE23_INS_GYRO_RANGE_MAX * (se23_real_t)1.001;
+}
+static void m_outage_accel(se23_ins_config_t *c) { c->outage_accel = (se23_real_t)160.01; }
+static void m_outage_rate(se23_ins_config_t *c) { c->outage_rate = (se23_real_t)30.01; }
 
 /* The filter's RAM as ins.h and the README state it (a firmware's budget):
  * a fixed part plus the ring of SE23_INS_RING samples. */
@@ -65,10 +98,10 @@ static void test_ins_memory_is_as_documented(void **state)
     (void)state;
 #if SE23_CFG_DOUBLE
     assert_int_equal(sizeof(se23_ins_hist_t), 72);
-    assert_int_equal(sizeof(se23_ins_t), 17488 + SE23_INS_RING * 72);
+    assert_int_equal(sizeof(se23_ins_t), 17496 + SE23_INS_RING * 72);
 #else
     assert_int_equal(sizeof(se23_ins_hist_t), 48);
-    assert_int_equal(sizeof(se23_ins_t), 8968 + SE23_INS_RING * 48);
+    assert_int_equal(sizeof(se23_ins_t), 8976 + SE23_INS_RING * 48);
 #endif
 }
 
@@ -90,6 +123,8 @@ static void test_setup_rejects_each_bad_field_and_writes_nothing(void **state)
         {m_floor, SE23_ERR_DOMAIN},        {m_floor_no_zupt, SE23_ERR_DOMAIN},
         {m_floor_neg, SE23_ERR_DOMAIN},    {m_floor_nan, SE23_ERR_NONFINITE},
         {m_floor_swing, SE23_ERR_DOMAIN},
+        {m_accel_range, SE23_ERR_DOMAIN},  {m_gyro_range, SE23_ERR_DOMAIN},
+        {m_outage_accel, SE23_ERR_DOMAIN}, {m_outage_rate, SE23_ERR_DOMAIN},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
         se23_ins_config_t c;
@@ -116,6 +151,16 @@ static void test_setup_rejects_each_bad_field_and_writes_nothing(void **state)
         assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
         c.dt_nominal = SE23_R(0.99e-9);
         assert_int_equal(se23_ins_setup(&c, &ins), SE23_ERR_DT);
+        /* The physical bounds, the other side: at them (the outage's
+         * 1-sigmas: accel_range + 10 m/s^2 and gyro_range). */
+        it_config(&c, 1);
+        c.accel_range = SE23_INS_ACCEL_RANGE_MAX;
+        c.gyro_range = SE23_INS_GYRO_RANGE_MAX;
+        assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
+        it_config(&c, 1);
+        c.outage_accel = SE23_R(160);
+        c.outage_rate = SE23_R(30);
+        assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
     }
 }
 
@@ -227,6 +272,102 @@ static void test_every_sample_ends_in_one_counter(void **state)
     assert_int_equal(ins.c.filter_errors, 0);
     assert_int_equal(se23_ins_imu(NULL, 0, 0, &w, &f), SE23_INS_FAILED);
     assert_int_equal(se23_ins_imu(&ins, 0, 0, NULL, &f), SE23_INS_FAILED);
+    assert_int_equal(ins.c.imu_failed, 1); /* the NULL reading */
+}
+
+/* Regression (fuzz_ins, issue 37 S6): a NaN reading with seq -1 was judged
+ * SE23_INS_BAD_TIME; ins.h screens NaN/Inf before the time. */
+static void test_nonfinite_reading_is_judged_before_its_time(void **state)
+{
+    (void)state;
+    se23_vec3_t w, f, bad_w, bad_f;
+    setup_init(1);
+    it_rest_sample(NULL, NULL, NULL, NULL, &w, &f);
+    bad_w = w;
+    bad_w.v[0] = (se23_real_t)NAN;
+    bad_f = f;
+    bad_f.v[2] = (se23_real_t)INFINITY;
+    memcpy(&copy, &ins, sizeof ins);
+    assert_int_equal(se23_ins_imu(&ins, IT_DT_NS, -1, &bad_w, &f), SE23_INS_NONFINITE);
+    assert_int_equal(se23_ins_imu(&ins, -1, -1, &w, &bad_f), SE23_INS_NONFINITE);
+    assert_int_equal(se23_ins_imu(&ins, -1, -1, &bad_w, &bad_f), SE23_INS_NONFINITE);
+    assert_int_equal(ins.c.imu_nonfinite, 3);
+    assert_int_equal(ins.c.imu_bad_time, 0);
+    /* finite readings at a time outside the clock's domain: BAD_TIME */
+    assert_int_equal(se23_ins_imu(&ins, IT_DT_NS, -1, &w, &f), SE23_INS_BAD_TIME);
+    assert_int_equal(ins.c.imu_bad_time, 1);
+    /* nothing but the counters changed */
+    copy.c = ins.c;
+    assert_memory_equal(&ins, &copy, sizeof ins);
+}
+
+/* Regression (fuzz_ins, issue 37 S7): a sample whose step failed ended in
+ * no imu_ counter. A state no step can carry (poked in here: se23_ins_init
+ * refuses one, test_init_refuses_means_beyond_the_physical_bounds) fails
+ * the steps; each sample still ends in exactly one counter, imu_failed for
+ * a failed step, which leaves the state as it was. */
+static void test_every_sample_ends_in_one_counter_when_the_step_fails(void **state)
+{
+    (void)state;
+    se23_vec3_t w, f;
+    setup_init(1);
+    assert_int_equal(it_run_rest(&ins, NULL, NULL, 0, 0, 10), 10);
+    ins.g.b_a.v[0] = (se23_real_t)HUGE_MEAN;
+    for (int k = 11; k <= 110; ++k) {
+        const uint32_t before = imu_sum(&ins.c);
+        se23_ins_verdict_t v;
+        memcpy(&copy, &ins, sizeof ins);
+        it_rest_sample(NULL, NULL, NULL, NULL, &w, &f);
+        v = se23_ins_imu(&ins, k * IT_DT_NS, k, &w, &f);
+        assert_int_equal(imu_sum(&ins.c), before + 1U);
+        if (v == SE23_INS_FAILED) {
+            assert_int_equal(ins.c.imu_failed, copy.c.imu_failed + 1U);
+            assert_true(ins.c.filter_errors > copy.c.filter_errors);
+            assert_memory_equal(&ins.g, &copy.g, sizeof ins.g);
+            assert_int_equal(ins.t_ns, copy.t_ns);
+        }
+    }
+    assert_true(ins.c.imu_failed > 0U);
+    assert_int_equal(imu_sum(&ins.c), 110U);
+}
+
+/* Regression (fuzz_ins, issue 37 S7): se23_ins_init accepted b_a = 1e300,
+ * after which most samples failed their step. Means beyond the physical
+ * bounds (ins.h, "Validation") are refused on both sides of each bound,
+ * along the diagonal (the bound is on the norm), the filter unchanged but
+ * for init_rejected; the state it kept goes on. */
+static void test_init_refuses_means_beyond_the_physical_bounds(void **state)
+{
+    (void)state;
+    const double bound[4] = {30.0, 150.0, (double)SE23_INS_VEL_MAX, (double)SE23_INS_POS_MAX};
+    se23_gauss_t g;
+    setup_init(1); /* gyro_range 30 rad/s, accel_range 150 m/s^2 */
+    assert_int_equal(it_run_rest(&ins, NULL, NULL, 0, 0, 10), 10);
+    for (int k = 0; k < 5; ++k) {
+        for (int side = 0; side < 2; ++side) {
+            const double x = k == 4 ? HUGE_MEAN : bound[k] * (side ? 0.999 : 1.001) / sqrt(3.0);
+            se23_vec3_t *m;
+            it_initial(15, 1e-3, 0.1, 1.0, &g);
+            m = k == 0 ? &g.b_g : k == 1 ? &g.b_a : k == 2 ? &g.T.v : k == 3 ? &g.T.p : &g.b_a;
+            for (int i = 0; i < 3; ++i) {
+                m->v[i] = (se23_real_t)(k == 4 && i > 0 ? 0.0 : x);
+            }
+            if (side == 0 || k == 4) {
+                memcpy(&copy, &ins, sizeof ins);
+                assert_int_equal(se23_ins_init(&ins, 10 * IT_DT_NS, &g), SE23_ERR_DOMAIN);
+                copy.c.init_rejected++;
+                assert_memory_equal(&ins, &copy, sizeof ins);
+            } else {
+                assert_int_equal(se23_ins_init(&ins, 10 * IT_DT_NS, &g), SE23_OK);
+                setup_init(1);
+                assert_int_equal(it_run_rest(&ins, NULL, NULL, 0, 0, 10), 10);
+            }
+        }
+    }
+    assert_int_equal(ins.c.init_rejected, 2);
+    assert_int_equal(it_run_rest(&ins, NULL, NULL, 10 * IT_DT_NS, 10, 100), 100);
+    assert_int_equal(imu_sum(&ins.c), 110U);
+    assert_int_equal(ins.c.filter_errors, 0);
 }
 
 static void test_counters_saturate(void **state)
@@ -290,6 +431,121 @@ static void test_every_fix_ends_in_one_counter(void **state)
     assert_int_equal(ins.c.gnss_used, 2);
     assert_int_equal(ins.c.gnss_pending_dropped, 1);
     assert_true((ins.status & SE23_INS_ST_GNSS_AIDED) != 0);
+    assert_int_equal(gnss_sum(&ins.c), 11U);
+    assert_int_equal(se23_ins_gnss(&ins, NULL), SE23_INS_FAILED);
+    assert_int_equal(ins.c.gnss_failed, 1);
+}
+
+/* A fix farther than a state may be (ins.h, "Validation": a gate reset
+ * would make it the state) is refused as invalid, both sides of the
+ * bounds; one whose update fails (a state poked in beyond them) ends in
+ * gnss_failed, the state kept. */
+static void test_every_fix_ends_in_one_counter_at_the_bounds(void **state)
+{
+    (void)state;
+    const double p0[3] = {0.0, 0.0, 0.0};
+    se23_ins_gnss_t fix;
+    setup_init(1);
+    assert_int_equal(it_run_rest(&ins, NULL, NULL, 0, 0, 100), 100);
+    for (int side = 0; side < 2; ++side) {
+        const double s = (side ? 0.999 : 1.001) / sqrt(3.0);
+        it_fix(100 * IT_DT_NS, p0, 1.0, &fix);
+        for (int i = 0; i < 3; ++i) {
+            fix.p_n.v[i] = (se23_real_t)((double)SE23_INS_POS_MAX * s);
+        }
+        assert_int_equal(se23_ins_gnss(&ins, &fix),
+                         side ? SE23_INS_GATED : SE23_INS_NONFINITE);
+        it_fix(100 * IT_DT_NS, p0, 1.0, &fix);
+        fix.has_vel = 1;
+        for (int i = 0; i < 3; ++i) {
+            fix.v_n.v[i] = (se23_real_t)((double)SE23_INS_VEL_MAX * s);
+            fix.sigma_v.v[i] = SE23_R(1);
+        }
+        assert_int_equal(se23_ins_gnss(&ins, &fix),
+                         side ? SE23_INS_GATED : SE23_INS_NONFINITE);
+    }
+    assert_int_equal(ins.c.gnss_nonfinite, 2);
+    assert_int_equal(ins.c.gnss_gated, 2);
+    ins.cfg.gnss_gate = SE23_R(0);
+    ins.g.T.p.v[0] = (se23_real_t)HUGE_MEAN;
+    memcpy(&copy, &ins, sizeof ins);
+    it_fix(100 * IT_DT_NS, p0, 1.0, &fix);
+    assert_int_equal(se23_ins_gnss(&ins, &fix), SE23_INS_FAILED);
+    assert_int_equal(ins.c.gnss_failed, 1);
+    assert_true(ins.c.filter_errors > copy.c.filter_errors);
+    assert_memory_equal(&ins.g, &copy.g, sizeof ins.g);
+    assert_int_equal(gnss_sum(&ins.c), 5U);
+}
+
+/* Regression (fuzz_ins, issue 37 S3): a pending fix vanished uncounted when
+ * a clock step was confirmed; it is stamped by the old clock, and is
+ * dropped into gnss_pending_dropped (ins.h, "GNSS"). */
+static void test_pending_fix_dropped_by_a_clock_step_is_counted(void **state)
+{
+    (void)state;
+    const double p0[3] = {0.0, 0.0, 0.0};
+    se23_ins_gnss_t fix;
+    se23_vec3_t w, f;
+    setup_init(1);
+    assert_int_equal(it_run_rest(&ins, NULL, NULL, 0, 0, 100), 100); /* t = 0.5 s */
+    it_fix(103 * IT_DT_NS, p0, 1.0, &fix);
+    assert_int_equal(se23_ins_gnss(&ins, &fix), SE23_INS_PENDING);
+    it_rest_sample(NULL, NULL, NULL, NULL, &w, &f);
+    /* the clock steps back by 0.4 s and stays there */
+    assert_int_equal(se23_ins_imu(&ins, 20 * IT_DT_NS, 101, &w, &f), SE23_INS_BAD_TIME);
+    assert_int_equal(se23_ins_imu(&ins, 21 * IT_DT_NS, 102, &w, &f), SE23_INS_BAD_TIME);
+    assert_int_equal(ins.have_pending, 1);
+    assert_int_equal(se23_ins_imu(&ins, 22 * IT_DT_NS, 103, &w, &f), SE23_INS_OUTAGE);
+    assert_int_equal(ins.have_pending, 0);
+    assert_int_equal(ins.c.gnss_pending_dropped, 1);
+    assert_int_equal(gnss_sum(&ins.c), 1U);
+    assert_int_equal(it_run_rest(&ins, NULL, NULL, 22 * IT_DT_NS, 103, 100), 100);
+    assert_int_equal(ins.c.gnss_used, 0);
+    assert_int_equal(gnss_sum(&ins.c), 1U);
+}
+
+/* Regression (fuzz_ins, issue 37 S3): a pending fix vanished uncounted at a
+ * new init; so at an alignment and when an outage loses the state. Each
+ * drops it into gnss_pending_dropped; a refused init or alignment changes
+ * nothing, the fix still held. */
+static void test_pending_fix_dropped_by_a_new_state_is_counted(void **state)
+{
+    (void)state;
+    const double p0[3] = {0.0, 0.0, 0.0};
+    se23_ins_gnss_t fix;
+    se23_ins_align_t a;
+    se23_gauss_t g;
+    setup_init(1);
+    it_initial(15, 1e-3, 0.1, 1.0, &g);
+    memset(&a, 0, sizeof a);
+    a.sigma_p = a.sigma_v = a.sigma_yaw = a.sigma_bg = a.sigma_ba = SE23_R(1);
+    assert_int_equal(it_run_rest(&ins, NULL, NULL, 0, 0, 100), 100);
+    it_fix(103 * IT_DT_NS, p0, 1.0, &fix);
+    assert_int_equal(se23_ins_gnss(&ins, &fix), SE23_INS_PENDING);
+    /* refused: nothing changes */
+    assert_int_equal(se23_ins_init(&ins, -1, &g), SE23_ERR_DT);
+    a.sigma_p = SE23_R(-1);
+    assert_int_equal(se23_ins_align(&ins, &a), SE23_ERR_DOMAIN);
+    a.sigma_p = SE23_R(1);
+    assert_int_equal(ins.have_pending, 1);
+    assert_int_equal(gnss_sum(&ins.c), 0U);
+    /* a new init */
+    assert_int_equal(se23_ins_init(&ins, 100 * IT_DT_NS, &g), SE23_OK);
+    assert_int_equal(ins.have_pending, 0);
+    assert_int_equal(ins.c.gnss_pending_dropped, 1);
+    /* an alignment */
+    assert_int_equal(se23_ins_gnss(&ins, &fix), SE23_INS_PENDING);
+    assert_int_equal(se23_ins_align(&ins, &a), SE23_OK);
+    assert_int_equal(ins.have_pending, 0);
+    assert_int_equal(ins.c.gnss_pending_dropped, 2);
+    /* an outage beyond max_outage (10 s) */
+    assert_int_equal(se23_ins_init(&ins, 100 * IT_DT_NS, &g), SE23_OK);
+    assert_int_equal(se23_ins_gnss(&ins, &fix), SE23_INS_PENDING);
+    assert_int_equal(it_run_rest(&ins, NULL, NULL, 4000 * IT_DT_NS, 4000, 3), 0);
+    assert_true((ins.status & SE23_INS_ST_LOST) != 0);
+    assert_int_equal(ins.have_pending, 0);
+    assert_int_equal(ins.c.gnss_pending_dropped, 3);
+    assert_int_equal(gnss_sum(&ins.c), 3U);
 }
 
 /* Regression (fuzz_ins, UBSan): a state near INT64_MAX ns (any t >= 0 is
@@ -329,8 +585,14 @@ int main(void)
         cmocka_unit_test(test_init_checks_the_state_once_and_counts_rejections),
         cmocka_unit_test(test_init_keeps_an_exactly_symmetric_covariance),
         cmocka_unit_test(test_every_sample_ends_in_one_counter),
+        cmocka_unit_test(test_nonfinite_reading_is_judged_before_its_time),
+        cmocka_unit_test(test_every_sample_ends_in_one_counter_when_the_step_fails),
+        cmocka_unit_test(test_init_refuses_means_beyond_the_physical_bounds),
         cmocka_unit_test(test_counters_saturate),
         cmocka_unit_test(test_every_fix_ends_in_one_counter),
+        cmocka_unit_test(test_every_fix_ends_in_one_counter_at_the_bounds),
+        cmocka_unit_test(test_pending_fix_dropped_by_a_clock_step_is_counted),
+        cmocka_unit_test(test_pending_fix_dropped_by_a_new_state_is_counted),
         cmocka_unit_test(test_fixes_near_the_end_of_time),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -301,8 +301,15 @@ static void test_align_rejects_what_it_cannot_use(void **state)
     align_request(&a);
     a.sigma_bg = SE23_R(0); /* bias states need it */
     assert_int_equal(se23_ins_align(&ins, &a), SE23_ERR_DOMAIN);
+    /* a position beyond SE23_INS_POS_MAX (ins.h, "Validation"), on the
+     * diagonal: the bound is on |p| */
+    align_request(&a);
+    for (int i = 0; i < 3; ++i) {
+        a.p_n.v[i] = (se23_real_t)((double)SE23_INS_POS_MAX * 1.001 / sqrt(3.0));
+    }
+    assert_int_equal(se23_ins_align(&ins, &a), SE23_ERR_DOMAIN);
     assert_int_equal(se23_ins_align(NULL, &a), SE23_ERR_NULL);
-    assert_int_equal(ins.c.init_rejected, 4);
+    assert_int_equal(ins.c.init_rejected, 5);
     assert_int_equal(ins.status & SE23_INS_ST_ALIGNING, 0);
     c.zupt = 0; /* no detector */
     assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);

@@ -139,6 +139,89 @@ static void test_clock_stepped_back_is_recovered(void **state)
     }
 }
 
+/* Regression (fuzz_ins, issue 37 S10): outage_accel 1e150 (double) or
+ * 3e14 (float) passed se23_ins_setup; a 100 s outage on flat Earth then
+ * left a covariance se23_ins_state refused (SE23_ERR_NONFINITE, documented
+ * for rotating Earth only) and later samples failed. The outage's 1-sigmas
+ * are bounded by the sensor ranges (ins.h), nothing written on refusal. */
+static void test_outage_sigma_beyond_the_sensor_range_is_refused(void **state)
+{
+    (void)state;
+    se23_ins_config_t c;
+    static se23_ins_t before;
+    it_config(&c, 1);
+#if SE23_CFG_DOUBLE
+    c.outage_accel = SE23_R(1e150);
+#else
+    c.outage_accel = SE23_R(3e14);
+#endif
+    c.max_outage = SE23_INS_MAX_OUTAGE;
+    memset(&ins, 0x5a, sizeof ins);
+    memcpy(&before, &ins, sizeof ins);
+    assert_int_equal(se23_ins_setup(&c, &ins), SE23_ERR_DOMAIN);
+    assert_memory_equal(&ins, &before, sizeof ins);
+    c.outage_accel = SE23_R(1);
+    c.outage_rate = SE23_R(1e3); /* above the 30 rad/s range */
+    assert_int_equal(se23_ins_setup(&c, &ins), SE23_ERR_DOMAIN);
+    assert_memory_equal(&ins, &before, sizeof ins);
+}
+
+/* The largest outage at the largest configuration the bounds allow (ranges
+ * at their maxima, the outage's 1-sigmas at the ranges), again and again
+ * on flat Earth: the inflation raises no variance above SE23_INS_P_MAX,
+ * se23_ins_state answers SE23_OK every time and the stream goes on. */
+static void test_outages_at_the_bounds_keep_the_state_finite(void **state)
+{
+    (void)state;
+    const long long outage = 600000000000LL; /* SE23_INS_MAX_OUTAGE */
+    const double cap = (double)SE23_INS_P_MAX * (1.0 + 1e-6);
+    se23_ins_config_t c;
+    se23_gauss_t g, out;
+    int64_t t;
+    long long t0 = 100 * IT_DT_NS, seq = 100;
+    it_config(&c, 1);
+    c.zupt = 0;
+    c.accel_range = SE23_INS_ACCEL_RANGE_MAX;
+    c.gyro_range = SE23_INS_GYRO_RANGE_MAX;
+    c.outage_accel = c.accel_range + SE23_R(10);
+    c.outage_rate = c.gyro_range;
+    c.max_outage = SE23_INS_MAX_OUTAGE;
+    assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
+    it_initial(15, 1e-3, 0.01, 0.1, &g);
+    assert_int_equal(se23_ins_init(&ins, 0, &g), SE23_OK);
+    assert_int_equal(it_run_rest(&ins, NULL, NULL, 0, 0, 100), 100);
+    for (int k = 0; k < 4; ++k) {
+        const long long ts = t0 + outage - 2 * IT_DT_NS; /* the third sample: 600 s */
+        double before[15];
+        for (int i = 0; i < 15; ++i) {
+            before[i] = (double)ins.g.P.m[16 * i];
+        }
+        assert_int_equal(sample(ts, seq + 1), SE23_INS_BAD_DT);
+        assert_int_equal(sample(ts + IT_DT_NS, seq + 2), SE23_INS_BAD_DT);
+        assert_int_equal(sample(ts + 2 * IT_DT_NS, seq + 3), SE23_INS_OUTAGE);
+        assert_int_equal(ins.c.time_resets, (uint32_t)(k + 1));
+        assert_int_equal(se23_ins_state(&ins, &out, &t), SE23_OK);
+        for (int i = 0; i < 15; ++i) {
+            const double d = (double)out.P.m[16 * i];
+            assert_true(isfinite(d) && d >= 0.0);
+            if (k == 0) { /* the first outage starts far below the cap */
+                assert_true(before[i] < (double)SE23_INS_P_MAX);
+                assert_true(d <= cap);
+            }
+        }
+        /* the outage itself grew them by at least what it added, or to the cap */
+        assert_true((double)out.P.m[16 * 6] >=
+                    (1.0 - 1e-6) * fmin(before[6] + 1e12, (double)SE23_INS_P_MAX));
+        t0 = ts + 2 * IT_DT_NS;
+        seq += 3;
+        assert_int_equal(it_run_rest(&ins, NULL, NULL, t0, seq, 20), 20);
+        t0 += 20 * IT_DT_NS;
+        seq += 20;
+        assert_int_equal(se23_ins_state(&ins, &out, &t), SE23_OK);
+    }
+    assert_int_equal(ins.c.filter_errors, 0);
+}
+
 /* An initial covariance no step could carry is refused where it enters. */
 static void test_huge_initial_covariance_is_refused(void **state)
 {
@@ -163,6 +246,8 @@ int main(void)
         cmocka_unit_test(test_outage_beyond_the_limit_loses_the_state),
         cmocka_unit_test(test_clock_stepped_back_is_recovered),
         cmocka_unit_test(test_huge_initial_covariance_is_refused),
+        cmocka_unit_test(test_outage_sigma_beyond_the_sensor_range_is_refused),
+        cmocka_unit_test(test_outages_at_the_bounds_keep_the_state_finite),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

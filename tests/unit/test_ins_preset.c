@@ -72,12 +72,37 @@ static void test_foot_preset_domain(void **state)
     assert_memory_equal(&a, &a0, sizeof a);
 }
 
+/* Regression (fuzz_ins, issue 37 S2): se23_ins_preset_foot(100, +-(pi/2 +
+ * 5e-7)) returned SE23_OK with a configuration se23_ins_setup refused
+ * (SE23_ERR_DOMAIN). Both judge lat by se23_earth_gravity's rule, |lat| <=
+ * pi/2 + SE23_EARTH_LAT_SLACK: within it, the preset's configuration is
+ * set up; beyond it, both refuse. */
+static void test_foot_preset_and_setup_share_the_latitude_rule(void **state)
+{
+    (void)state;
+    const double half_pi = 1.57079632679489661923;
+    for (int sign = -1; sign <= 1; sign += 2) {
+        se23_ins_config_t c;
+        se23_ins_align_t a;
+        se23_real_t lat = (se23_real_t)(sign * (half_pi + 5e-7));
+        assert_int_equal(se23_ins_preset_foot(SE23_R(100), lat, &c, &a), SE23_OK);
+        assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
+        assert_int_equal(se23_ins_align(&ins, &a), SE23_OK);
+        /* beyond the slack: the preset refuses, and so does setup */
+        lat = (se23_real_t)(sign * (half_pi + 2e-6));
+        assert_int_equal(se23_ins_preset_foot(SE23_R(100), lat, &c, &a), SE23_ERR_DOMAIN);
+        c.lat = lat;
+        assert_int_equal(se23_ins_setup(&c, &ins), SE23_ERR_DOMAIN);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_threshold_matches_the_chi2_table),
         cmocka_unit_test(test_foot_preset_is_usable_at_every_rate),
         cmocka_unit_test(test_foot_preset_domain),
+        cmocka_unit_test(test_foot_preset_and_setup_share_the_latitude_rule),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
