@@ -299,6 +299,25 @@ i_unix_time() {
 }
 check import-unix-time-exact i_unix_time
 
+# Issue 37 (fuzzing). S8: a value finite in the file but not once converted
+# (1e308 g is 9.8e308 m/s^2, beyond the double range; a 10 degree
+# --accel-misalign mixing two 1.7e308 m/s^2 axes) is skipped like a NaN,
+# never written as Inf or NaN; a time beyond int64 nanoseconds too.
+i_overflow() {
+    i_rows over "0,1,2,3,0,0,1" "0.01,1,2,3,0,0,1e308" "0.02,1,2,3,0,0,1" \
+        "9300000000,1,2,3,0,0,1" "0.03,1,2,3,0,0,1"
+    i_run over 0 && i_expect over rows=5 rows_written=3 malformed=2 malformed_nonfinite=2 &&
+        i_msg over 'over.csv:3: column 7: not finite once converted to rad/s, m/s^2: "1e308"' &&
+        i_msg over 'over.csv:5: column 1: not finite (NaN, Inf or out of range): "9300000000"' &&
+        i_back over samples=3 last_t_ns=30000000 || return 1
+    i_rows overrot "0,1,2,3,0,0,9.8" "0.01,1,2,3,1.7e308,1.7e308,0" "0.02,1,2,3,0,0,9.8"
+    i_run overrot 0 --accel-unit m/s2 --accel-misalign 0,0,10 &&
+        i_expect overrot rows=3 rows_written=2 malformed_nonfinite=1 &&
+        i_msg overrot 'overrot.csv:3: column 5: not finite once converted' &&
+        i_back overrot samples=2 && ! grep -Eiq "nan|inf" "$IW/overrot.back"
+}
+check import-overflow-after-conversion i_overflow
+
 # The real walk, with the defaults: the counts of its README.
 I_WALK_COUNTS="rows=16539 rows_written=16334 dup_time=205 dup_time_same=205 backwards=0
     gaps=165 lost_samples=244 longest_gap_s=0.012552738 malformed=0 gyro_clipped=0

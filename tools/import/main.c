@@ -122,9 +122,9 @@ static void usage(FILE *f)
             "Rows repeating the last written timestamp, or earlier, are dropped; a\n"
             "longer interval than the nominal one loses round(interval/nominal - 1)\n"
             "samples and the sequence numbers skip them. Malformed rows (wrong field\n"
-            "count, text or NaN/Inf in a mapped field, a line over %d bytes) are\n"
-            "skipped. Exit status: 0 done, 1 unreadable input, no valid row or write\n"
-            "error, 2 bad usage.\n",
+            "count, text or NaN/Inf in a mapped field, also once converted, a line\n"
+            "over %d bytes) are skipped. Exit status: 0 done, 1 unreadable input, no\n"
+            "valid row or write error, 2 bad usage.\n",
             AUTO_HEADER_MAX, RATE_PREFIX, CSV_LINE_MAX);
 }
 
@@ -330,13 +330,15 @@ static void malformed(importer_t *im, const csv_reader_t *r, row_status_t st,
                 im->ncols > 0 ? "" : "at least ",
                 im->ncols > 0 ? im->ncols : row_cols_needed(&im->map));
     } else {
+        static const char *const what[] = {"not a number", "not finite (NaN, Inf or out of range)",
+                                           "not finite once converted to rad/s, m/s^2"};
         if (st == ROW_TEXT) {
             c->bad_number++;
         } else {
-            c->bad_nonfinite++;
+            c->bad_nonfinite++; /* ROW_NONFINITE, ROW_OVERFLOW */
         }
         row_msg(im, r->lineno, "column %d: %s: %s, skipped", why->bad_col + 1,
-                st == ROW_TEXT ? "not a number" : "not finite (NaN, Inf or out of range)",
+                what[st == ROW_TEXT ? 0 : st == ROW_NONFINITE ? 1 : 2],
                 quote(why->bad, q, sizeof q));
     }
 }

@@ -55,6 +55,22 @@ static int clipped(const double v[3], double range)
     return range > 0.0 && (fabs(v[0]) >= range || fabs(v[1]) >= range || fabs(v[2]) >= range);
 }
 
+static int finite3(const double v[3])
+{
+    return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]);
+}
+
+/* The column of the largest |raw| value of a triad (the one that overflows
+ * first when scaled). */
+static int largest_col(const double raw[3], const int col[3])
+{
+    int k, best = 0;
+    for (k = 1; k < 3; k++) {
+        best = fabs(raw[k]) > fabs(raw[best]) ? k : best;
+    }
+    return col[best];
+}
+
 /* Unit conversion, then the axis map. */
 static void convert(const row_map_t *m, const double raw[3], double scale, double out[3])
 {
@@ -64,14 +80,38 @@ static void convert(const row_map_t *m, const double raw[3], double scale, doubl
     }
 }
 
+/* The raw values of out converted (units, axes, misalignment) and their
+ * clipping flags; ROW_OVERFLOW (the column to blame in *bad) if a value
+ * finite in the file is not once converted (1e308 g, or rotated): the row
+ * is then as unusable as one with a NaN in the file. */
+static row_status_t convert_row(const row_map_t *m, row_t *out, int *bad)
+{
+    double a[3];
+    int k;
+    convert(m, out->raw_gyro, m->gyro_scale, out->omega);
+    convert(m, out->raw_accel, m->accel_scale, a);
+    for (k = 0; k < 3; k++) {
+        out->accel[k] = m->accel_rot[3 * k] * a[0] + m->accel_rot[3 * k + 1] * a[1] +
+                        m->accel_rot[3 * k + 2] * a[2];
+    }
+    out->gyro_clipped = clipped(out->raw_gyro, m->gyro_range);
+    out->accel_clipped = clipped(out->raw_accel, m->accel_range);
+    if (finite3(out->omega) && finite3(out->accel)) {
+        return ROW_OK;
+    }
+    *bad = finite3(out->omega) ? largest_col(out->raw_accel, m->accel_col)
+                               : largest_col(out->raw_gyro, m->gyro_col);
+    return ROW_OVERFLOW;
+}
+
 row_status_t row_parse(const row_map_t *m, const char *line, int ncols, row_t *out,
                        row_why_t *why)
 {
     csv_field_t f[ROW_COLS_MAX];
     const char *p = line;
-    double a[3];
-    int nf, k, bad = -1;
+    int nf, bad = -1;
     csv_num_t r;
+    row_status_t st;
     while (*p == ' ' || *p == '\t') {
         p++;
     }
@@ -96,15 +136,11 @@ row_status_t row_parse(const row_map_t *m, const char *line, int ncols, row_t *o
         set_why(why, nf, bad, &f[bad]);
         return num_status(r);
     }
-    convert(m, out->raw_gyro, m->gyro_scale, out->omega);
-    convert(m, out->raw_accel, m->accel_scale, a);
-    for (k = 0; k < 3; k++) {
-        out->accel[k] = m->accel_rot[3 * k] * a[0] + m->accel_rot[3 * k + 1] * a[1] +
-                        m->accel_rot[3 * k + 2] * a[2];
+    st = convert_row(m, out, &bad);
+    if (st != ROW_OK) {
+        set_why(why, nf, bad, &f[bad]);
     }
-    out->gyro_clipped = clipped(out->raw_gyro, m->gyro_range);
-    out->accel_clipped = clipped(out->raw_accel, m->accel_range);
-    return ROW_OK;
+    return st;
 }
 
 int row_count_fields(const char *line)

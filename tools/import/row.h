@@ -39,7 +39,8 @@ typedef enum {
     ROW_BLANK,    /**< nothing but blanks: not a data row */
     ROW_COLUMNS,  /**< wrong number of fields */
     ROW_TEXT,     /**< a mapped field is not a number (or the line has a NUL) */
-    ROW_NONFINITE /**< a mapped field is NaN, Inf, or out of range */
+    ROW_NONFINITE, /**< a mapped field is NaN, Inf, or out of range */
+    ROW_OVERFLOW   /**< finite in the file, not once converted (1e308 g) */
 } row_status_t;
 
 typedef struct {
@@ -60,7 +61,10 @@ typedef struct {
 /**
  * Parses line into *out. ncols: fields a row must have (0: any number,
  * as long as every mapped column is there). why (may be NULL) says what
- * was wrong.
+ * was wrong. Every converted value (omega, accel: after the units, the
+ * axes and the misalignment) is finite for ROW_OK; for ROW_OVERFLOW, why
+ * names the largest raw value of the triad that is not. The time needs no
+ * such check: csv_parse_time converts exactly, within int64.
  */
 row_status_t row_parse(const row_map_t *m, const char *line, int ncols, row_t *out,
                        row_why_t *why);
