@@ -318,6 +318,23 @@ i_overflow() {
 }
 check import-overflow-after-conversion i_overflow
 
+# S9: --out naming the input (the file itself, a symbolic link to it, a
+# hard link with mode=a) is refused, status 2, the CSV left as it was.
+i_out_is_in() {
+    i_rows same "0,1,2,3,0,0,1" "0.01,1,2,3,0,0,1"
+    cp "$IW/same.csv" "$IW/same.orig"
+    ln -sf same.csv "$IW/same-sym.csv"
+    ln -f "$IW/same.csv" "$IW/same-hard.csv"
+    for io_out in "same.csv?mode=w" "same-sym.csv?mode=w" "same-hard.csv?mode=a"; do
+        $IVG "$IB/se23-import" --out "file://$IW/$io_out" "$IW/same.csv" >"$IW/same.err" 2>&1
+        io_rc=$?
+        echo "--out file://$IW/$io_out: exit status $io_rc (expected 2)"
+        [ "$io_rc" -eq 2 ] && cmp "$IW/same.csv" "$IW/same.orig" &&
+            i_msg same "is the input file $IW/same.csv: refused, nothing written" || return 1
+    done
+}
+check import-out-is-input-refused i_out_is_in
+
 # The real walk, with the defaults: the counts of its README.
 I_WALK_COUNTS="rows=16539 rows_written=16334 dup_time=205 dup_time_same=205 backwards=0
     gaps=165 lost_samples=244 longest_gap_s=0.012552738 malformed=0 gyro_clipped=0

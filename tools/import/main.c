@@ -14,7 +14,8 @@
  * input without one leaves no log behind.
  *
  * Exit status: 0 done; 1 the input cannot be read, holds no valid row, or
- * the output cannot be written; 2 bad usage. Run with --help.
+ * the output cannot be written; 2 bad usage (also: --out is the input).
+ * Run with --help.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
@@ -24,6 +25,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "../lcm/harness.h"
 #include "csv.h"
@@ -124,7 +126,7 @@ static void usage(FILE *f)
             "samples and the sequence numbers skip them. Malformed rows (wrong field\n"
             "count, text or NaN/Inf in a mapped field, also once converted, a line\n"
             "over %d bytes) are skipped. Exit status: 0 done, 1 unreadable input, no\n"
-            "valid row or write error, 2 bad usage.\n",
+            "valid row or write error, 2 bad usage (also: --out is the input file).\n",
             AUTO_HEADER_MAX, RATE_PREFIX, CSV_LINE_MAX);
 }
 
@@ -228,6 +230,36 @@ static int setup(importer_t *im)
     return 0;
 }
 
+/*
+ * -1 (after saying so) if --out, a file:// URL, names the input file itself,
+ * also through a hard or symbolic link (the same device and inode): LCM
+ * would replace the CSV with the log. An output that does not exist yet
+ * cannot be the input.
+ */
+static int out_not_in(const opts_t *o)
+{
+    const char *p = o->out + 7; /* file://PATH?PARAMS: LCM's path is PATH */
+    struct stat si, so;
+    char *path;
+    int same;
+    if (strncmp(o->out, "file://", 7) != 0) {
+        return 0;
+    }
+    path = strndup(p, strcspn(p, "?"));
+    if (path == NULL) {
+        fprintf(stderr, PROG ": out of memory\n");
+        return -1;
+    }
+    same = stat(path, &so) == 0 && stat(o->in, &si) == 0 && si.st_dev == so.st_dev &&
+           si.st_ino == so.st_ino;
+    if (same) {
+        fprintf(stderr, PROG ": --out %s is the input file %s: refused, nothing written\n",
+                path, o->in);
+    }
+    free(path);
+    return same ? -1 : 0;
+}
+
 static int parse_args(int argc, char **argv, importer_t *im)
 {
     const double inf = HUGE_VAL;
@@ -264,7 +296,10 @@ static int parse_args(int argc, char **argv, importer_t *im)
     }
     o->in = n_pos == 1 ? pos[0] : NULL;
     free(pos);
-    return rc == 0 ? setup(im) : -1;
+    if (rc == 0) {
+        rc = setup(im);
+    }
+    return rc == 0 ? out_not_in(o) : -1;
 }
 
 /* The time t_ns as seconds, into buf. */
