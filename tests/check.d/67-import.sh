@@ -335,6 +335,16 @@ i_out_is_in() {
 }
 check import-out-is-input-refused i_out_is_in
 
+# A UTF-8 byte order mark before the first line is dropped: with --header 0
+# the first row is data; with --header auto too (not taken for a header).
+i_bom() {
+    printf '\357\273\2770,1,2,3,0,0,1\n0.01,1,2,3,0,0,1\n' >"$IW/bom.csv"
+    i_run bom 0 --header 0 && i_expect bom rows=2 rows_written=2 malformed=0 &&
+        i_back bom first_t_ns=0 || return 1
+    i_run bom 0 --header auto && i_expect bom header_lines=0 rows=2 rows_written=2
+}
+check import-utf8-bom i_bom
+
 # The real walk, with the defaults: the counts of its README.
 I_WALK_COUNTS="rows=16539 rows_written=16334 dup_time=205 dup_time_same=205 backwards=0
     gaps=165 lost_samples=244 longest_gap_s=0.012552738 malformed=0 gyro_clipped=0

@@ -15,11 +15,23 @@ void csv_reader_init(csv_reader_t *r, FILE *f)
     r->f = f;
 }
 
+/* Drops a UTF-8 byte order mark from the n bytes at line; the new n. */
+static size_t drop_bom(char *line, size_t n)
+{
+    static const char bom[3] = {'\xEF', '\xBB', '\xBF'};
+    if (n < sizeof bom || memcmp(line, bom, sizeof bom) != 0) {
+        return n;
+    }
+    memmove(line, line + sizeof bom, n - sizeof bom);
+    return n - sizeof bom;
+}
+
 int csv_read_line(csv_reader_t *r)
 {
-    /* One byte beyond CSV_LINE_MAX is kept so that a CR there (a CRLF
-     * line of exactly CSV_LINE_MAX bytes) can still be dropped. */
-    char tmp[CSV_LINE_MAX + 2];
+    /* 4 bytes beyond CSV_LINE_MAX are kept so that a CR there (a CRLF
+     * line of exactly CSV_LINE_MAX bytes) and a byte order mark can still
+     * be dropped: a line overflows tmp only if it is too long anyway. */
+    char tmp[CSV_LINE_MAX + 4];
     size_t n = 0;
     int c, any = 0, overflow = 0;
     r->too_long = 0;
@@ -33,7 +45,7 @@ int csv_read_line(csv_reader_t *r)
             r->has_nul = 1;
             c = '?';
         }
-        if (n < sizeof tmp - 1) {
+        if (n < sizeof tmp) {
             tmp[n++] = (char)c;
         } else {
             overflow = 1;
@@ -41,6 +53,9 @@ int csv_read_line(csv_reader_t *r)
     }
     if (!any) {
         return 0;
+    }
+    if (r->lineno == 0) {
+        n = drop_bom(tmp, n);
     }
     if (!overflow && n > 0 && tmp[n - 1] == '\r') {
         n--;

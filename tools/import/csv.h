@@ -3,7 +3,8 @@
  * @brief Bounded CSV line reading and field parsing for se23-import: never
  *        allocates from what it reads, never trusts a length in the file.
  *
- * Lines end in LF; a CR before the LF (CRLF) is dropped. A line longer than
+ * Lines end in LF; a CR before the LF (CRLF) is dropped; a UTF-8 byte order
+ * mark (EF BB BF) at the start of the file is dropped. A line longer than
  * CSV_LINE_MAX bytes is flagged too long and the rest of it is read and
  * thrown away, so memory stays CSV_LINE_MAX whatever the file holds.
  * Fields are separated by commas; spaces and tabs around a field are not
