@@ -345,6 +345,28 @@ i_bom() {
 }
 check import-utf8-bom i_bom
 
+# A line without a line end within 4 MiB (CSV_RUNAWAY_MAX) refuses the
+# file, status 1, naming the line: 5 MB of NULs after two rows (refused by
+# the first pass: no log), the same in one pass (--rate:
+# the log keeps the rows before, and says so), and /dev/zero (without
+# valgrind, 10 s at most: a timeout is status 124).
+i_runaway() {
+    i_rows runaway "0,1,2,3,0,0,1" "0.01,1,2,3,0,0,1"
+    head -c 5000000 /dev/zero >>"$IW/runaway.csv"
+    i_run runaway 1 && i_msg runaway "runaway.csv:4: no line end within 4194304 bytes" &&
+        [ ! -e "$IW/runaway.log" ] || return 1
+    i_run runaway 1 --rate 100 &&
+        i_msg runaway "runaway.csv: stopped early; .* holds the 2 samples written before" ||
+        return 1
+    timeout 10 "$IB/se23-import" --out "file://$IW/zero.log?mode=w" /dev/zero \
+        >"$IW/zero.out" 2>"$IW/zero.err"
+    ir_got=$?
+    cat "$IW/zero.err"
+    echo "exit status $ir_got (expected 1)"
+    [ "$ir_got" -eq 1 ] && i_msg zero "/dev/zero:1: no line end within 4194304 bytes"
+}
+check import-runaway-line-refused i_runaway
+
 # The real walk, with the defaults: the counts of its README.
 I_WALK_COUNTS="rows=16539 rows_written=16334 dup_time=205 dup_time_same=205 backwards=0
     gaps=165 lost_samples=244 longest_gap_s=0.012552738 malformed=0 gyro_clipped=0

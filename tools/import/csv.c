@@ -33,13 +33,22 @@ int csv_read_line(csv_reader_t *r)
      * be dropped: a line overflows tmp only if it is too long anyway. */
     char tmp[CSV_LINE_MAX + 4];
     size_t n = 0;
+    long total = 0;
     int c, any = 0, overflow = 0;
     r->too_long = 0;
     r->has_nul = 0;
+    if (r->runaway) {
+        return 0;
+    }
     while ((c = getc(r->f)) != EOF) {
         any = 1;
         if (c == '\n') {
             break;
+        }
+        if (++total > CSV_RUNAWAY_MAX) {
+            r->runaway = 1;
+            r->lineno++;
+            return 0;
         }
         if (c == '\0') {
             r->has_nul = 1;

@@ -6,7 +6,9 @@
  * Lines end in LF; a CR before the LF (CRLF) is dropped; a UTF-8 byte order
  * mark (EF BB BF) at the start of the file is dropped. A line longer than
  * CSV_LINE_MAX bytes is flagged too long and the rest of it is read and
- * thrown away, so memory stays CSV_LINE_MAX whatever the file holds.
+ * thrown away, so memory stays CSV_LINE_MAX whatever the file holds; a
+ * line that goes on for CSV_RUNAWAY_MAX bytes without a line end stops the
+ * reading (runaway), so time stays bounded too (/dev/zero, a binary file).
  * Fields are separated by commas; spaces and tabs around a field are not
  * part of it; empty fields at the end of a line (a trailing comma) are not
  * counted. No quoting: a quoted number is text.
@@ -20,6 +22,18 @@
 
 #define CSV_LINE_MAX 4096 /**< longest line kept [bytes, without the LF] */
 
+/**
+ * Longest line read at all [bytes]: 4 MiB, 1024 times CSV_LINE_MAX. An
+ * IMU row is about 100 bytes and a line over CSV_LINE_MAX is already junk,
+ * skipped as malformed: a damaged stretch of a recording (a garbled burst,
+ * a run of NULs after a power loss) up to this size is skipped that way and
+ * the rows after it are still read. A file that goes on this long without a
+ * line end is not line-based text (a binary file, /dev/zero, an unending
+ * stream): reading it to its end would take forever, or a long while for
+ * nothing, so the reader stops there (after some 20 ms of reading).
+ */
+#define CSV_RUNAWAY_MAX (1024L * CSV_LINE_MAX)
+
 typedef struct {
     FILE *f;
     char buf[CSV_LINE_MAX + 1]; /**< the line, NUL-terminated (no LF, no CR) */
@@ -27,12 +41,18 @@ typedef struct {
     int64_t lineno;             /**< 1-based number of the line in buf */
     int too_long;               /**< the line had more than CSV_LINE_MAX bytes */
     int has_nul;                /**< the line holds a NUL byte */
+    int runaway;                /**< line lineno had no line end within
+                                     CSV_RUNAWAY_MAX bytes: reading stopped */
 } csv_reader_t;
 
 /** r reads f from its current position; line numbers start at 1. */
 void csv_reader_init(csv_reader_t *r, FILE *f);
 
-/** The next line into r: 1, or 0 at the end of the file (or a read error). */
+/**
+ * The next line into r: 1, or 0 at the end of the file, a read error or a
+ * runaway line (r->runaway set, r->lineno its number; every later call
+ * returns 0 too).
+ */
 int csv_read_line(csv_reader_t *r);
 
 /** A field: [p, p + len) of a line, spaces and tabs trimmed. */

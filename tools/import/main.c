@@ -13,9 +13,9 @@
  * (their median). The output is created at the first valid row, so an
  * input without one leaves no log behind.
  *
- * Exit status: 0 done; 1 the input cannot be read, holds no valid row, or
- * the output cannot be written; 2 bad usage (also: --out is the input).
- * Run with --help.
+ * Exit status: 0 done; 1 the input cannot be read, holds no valid row,
+ * has no line end within CSV_RUNAWAY_MAX bytes, or the output cannot be
+ * written; 2 bad usage (also: --out is the input). Run with --help.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
@@ -125,9 +125,10 @@ static void usage(FILE *f)
             "longer interval than the nominal one loses round(interval/nominal - 1)\n"
             "samples and the sequence numbers skip them. Malformed rows (wrong field\n"
             "count, text or NaN/Inf in a mapped field, also once converted, a line\n"
-            "over %d bytes) are skipped. Exit status: 0 done, 1 unreadable input, no\n"
-            "valid row or write error, 2 bad usage (also: --out is the input file).\n",
-            AUTO_HEADER_MAX, RATE_PREFIX, CSV_LINE_MAX);
+            "over %d bytes) are skipped; a line over %ld bytes refuses the file.\n"
+            "Exit status: 0 done, 1 unreadable or refused input, no valid row or\n"
+            "write error, 2 bad usage (also: --out is the input file).\n",
+            AUTO_HEADER_MAX, RATE_PREFIX, CSV_LINE_MAX, CSV_RUNAWAY_MAX);
 }
 
 static void defaults(opts_t *o)
@@ -444,7 +445,8 @@ static int is_header(const importer_t *im, const csv_reader_t *r, int64_t seen)
 /*
  * Reads f from the start: header, then every row. main_pass: count, report,
  * write (take_row); otherwise collect intervals (take_interval). Returns 0,
- * or -1 on a read or write error.
+ * or -1 on a read or write error or a runaway line (no line end: the file
+ * is refused).
  */
 static int scan(importer_t *im, FILE *f, int main_pass)
 {
@@ -488,6 +490,11 @@ static int scan(importer_t *im, FILE *f, int main_pass)
             continue;
         }
         rc = main_pass ? take_row(im, &row, r->lineno) : take_interval(im, &row);
+    }
+    if (r->runaway) {
+        fprintf(stderr, PROG ": %s:%lld: no line end within %ld bytes: not a CSV text file, "
+                        "refused\n", im->o.in, (long long)r->lineno, CSV_RUNAWAY_MAX);
+        rc = -1;
     }
     if (main_pass) {
         c->header = seen;
@@ -622,6 +629,10 @@ int main(int argc, char **argv)
     fclose(f);
     if (im.lc != NULL) {
         lcm_destroy(im.lc);
+        if (rc != 0) {
+            fprintf(stderr, PROG ": %s: stopped early; %s holds the %lld samples written before\n",
+                    im.o.in, im.o.out, (long long)im.h.c.written);
+        }
     }
     if (rc != 0) {
         return 1;
