@@ -347,7 +347,7 @@ check import-utf8-bom i_bom
 
 # A line without a line end within 4 MiB (CSV_RUNAWAY_MAX) refuses the
 # file, status 1, naming the line: 5 MB of NULs after two rows (refused by
-# the first pass: no log), the same in one pass (--rate:
+# the first pass: no log), the same in one pass (--rate, --unit-check off:
 # the log keeps the rows before, and says so), and /dev/zero (without
 # valgrind, 10 s at most: a timeout is status 124).
 i_runaway() {
@@ -355,7 +355,7 @@ i_runaway() {
     head -c 5000000 /dev/zero >>"$IW/runaway.csv"
     i_run runaway 1 && i_msg runaway "runaway.csv:4: no line end within 4194304 bytes" &&
         [ ! -e "$IW/runaway.log" ] || return 1
-    i_run runaway 1 --rate 100 &&
+    i_run runaway 1 --rate 100 --unit-check off &&
         i_msg runaway "runaway.csv: stopped early; .* holds the 2 samples written before" ||
         return 1
     timeout 10 "$IB/se23-import" --out "file://$IW/zero.log?mode=w" /dev/zero \
@@ -367,13 +367,48 @@ i_runaway() {
 }
 check import-runaway-line-refused i_runaway
 
+# The unit check: the first rest (|f| steady within 10 % for 0.5 s) must
+# read 0.5 to 1.5 g. A file in m/s^2 that starts moving (0.2 s at 0.5 and
+# 2 g) then rests at 9.8 m/s^2 (1 s at 100 Hz, noise 0.02 m/s^2) is refused
+# as g, status 1, naming the rest and --accel-unit m/s2, no log; read as
+# m/s2 it passes (1.000 g). The same file in g read as m/s2: refused,
+# "use --accel-unit g". A rest at 3 g (29 m/s^2) fits no unit. With
+# --unit-check off the file is imported as told.
+# i_rest NAME SCALE: NAME.csv, that walk, accelerations times SCALE.
+i_rest() {
+    awk -v s="$2" 'BEGIN {
+        print "t,gx,gy,gz,ax,ay,az"
+        for (i = 0; i < 120; i++) {
+            f = i < 20 ? 9.80665 * (i % 2 ? 0.5 : 2) : 9.80665 + 0.01 * (i % 3 - 1)
+            printf "%.2f,0.1,-0.2,0.1,%.17g,%.17g,%.17g\n", i / 100, 0.6 * f * s, 0, 0.8 * f * s
+        }
+    }' >"$IW/$1.csv"
+}
+i_units_check() {
+    i_rest rest-ms2 1 && i_rest rest-g 0.10197162129779283 && i_rest rest-3g 3 &&
+        i_run rest-ms2 1 && [ ! -e "$IW/rest-ms2.log" ] &&
+        i_msg rest-ms2 "rest-ms2.csv: the accelerometer reads 9.81 g at rest (t = 0.2.* to 0.7" &&
+        i_msg rest-ms2 "is the file in m/s2? use --accel-unit m/s2" &&
+        i_run rest-ms2 0 --accel-unit m/s2 &&
+        grep -q "unit check: |f| = 1.000 g at rest (t = 0.200000000 to 0.700000000 s)" \
+            "$IW/rest-ms2.out" &&
+        i_run rest-g 1 --accel-unit m/s2 && i_msg rest-g "reads 0.102 g at rest" &&
+        i_msg rest-g "is the file in g? use --accel-unit g" &&
+        i_run rest-g 0 && i_run rest-3g 1 --accel-unit m/s2 && i_msg rest-3g "reads 3 g at rest" &&
+        i_msg rest-3g "no --accel-unit fits" &&
+        i_run rest-ms2 0 --unit-check off && grep -q "unit check off" "$IW/rest-ms2.out"
+}
+check import-unit-check-at-rest i_units_check
+
 # The real walk, with the defaults: the counts of its README.
 I_WALK_COUNTS="rows=16539 rows_written=16334 dup_time=205 dup_time_same=205 backwards=0
     gaps=165 lost_samples=244 longest_gap_s=0.012552738 malformed=0 gyro_clipped=0
     accel_clipped=0 last_seq=16578"
 i_walk() {
     # shellcheck disable=SC2086
-    i_import "$I_WALK" walk 0 && i_expect walk $I_WALK_COUNTS
+    i_import "$I_WALK" walk 0 && i_expect walk $I_WALK_COUNTS &&
+        grep -q "unit check: |f| = 0.999 g at rest (t = 0.000000000 to 0.502114296 s)" \
+            "$IW/walk.out"
 }
 check import-walk i_walk
 

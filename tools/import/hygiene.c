@@ -29,6 +29,12 @@ static int same_values(const row_t *a, const row_t *b)
     return same;
 }
 
+int64_t hygiene_interval(int64_t a, int64_t b)
+{
+    /* b >= a: the difference only overflows past INT64_MAX */
+    return (a < 0 && b > INT64_MAX + a) ? INT64_MAX : b - a;
+}
+
 /* Samples lost before an interval of dt_ns. */
 static int64_t lost_before(const hygiene_t *h, int64_t dt_ns)
 {
@@ -56,10 +62,7 @@ hyg_action_t hygiene_accept(hygiene_t *h, const row_t *r, int64_t *seq)
         return HYG_BACK;
     }
     if (h->have_last) {
-        /* r->t_ns > last: the difference only overflows past INT64_MAX */
-        int64_t dt = (h->last.t_ns < 0 && r->t_ns > INT64_MAX + h->last.t_ns)
-                         ? INT64_MAX
-                         : r->t_ns - h->last.t_ns;
+        const int64_t dt = hygiene_interval(h->last.t_ns, r->t_ns);
         lost = lost_before(h, dt);
         if (lost > 0) {
             h->c.gaps++;
@@ -78,6 +81,40 @@ hyg_action_t hygiene_accept(hygiene_t *h, const row_t *r, int64_t *seq)
     h->have_last = 1;
     *seq = h->c.seq;
     return HYG_WRITE;
+}
+
+/* The run restarted at a sample of |f| = m at t_ns. */
+static void rest_restart(hyg_rest_t *s, int64_t t_ns, double m)
+{
+    s->t0_ns = t_ns;
+    s->n = 0;
+    s->sum = 0.0;
+    s->lo = m;
+    s->hi = m;
+}
+
+int hygiene_rest(hyg_rest_t *s, const row_t *r)
+{
+    const double m = sqrt(r->accel[0] * r->accel[0] + r->accel[1] * r->accel[1] +
+                          r->accel[2] * r->accel[2]);
+    if (s->found) {
+        return 1;
+    }
+    if (!isfinite(m)) { /* beyond the double range (1e200 in the file): no rest */
+        s->n = 0;
+        return 0;
+    }
+    if (s->n == 0 ||
+        fmax(s->hi, m) - fmin(s->lo, m) > HYG_REST_SPREAD * (s->sum + m) / (double)(s->n + 1)) {
+        rest_restart(s, r->t_ns, m); /* moving: a rest can only start here */
+    }
+    s->n++;
+    s->sum += m;
+    s->lo = fmin(s->lo, m);
+    s->hi = fmax(s->hi, m);
+    s->t1_ns = r->t_ns;
+    s->found = s->n >= HYG_REST_N && hygiene_interval(s->t0_ns, s->t1_ns) >= HYG_REST_NS;
+    return s->found;
 }
 
 static int cmp_i64(const void *a, const void *b)

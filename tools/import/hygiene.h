@@ -9,6 +9,10 @@
  * Later time: written with the next sequence number plus the samples lost
  * before it, lost = round(interval / nominal) - 1 when that is >= 1 (a gap),
  * so that a downstream INS counts them as missing.
+ *
+ * The unit check looks for the first rest (hygiene_rest): the specific
+ * force there must read about 1 g, else the file is in another unit than
+ * the one given (main.c decides and says which).
  */
 #ifndef SE23_IMPORT_HYGIENE_H
 #define SE23_IMPORT_HYGIENE_H
@@ -60,6 +64,44 @@ void hygiene_init(hygiene_t *h, double nominal_ns);
  * number in *seq (and remembers r as the last row written).
  */
 hyg_action_t hygiene_accept(hygiene_t *h, const row_t *r, int64_t *seq);
+
+/**
+ * A rest: at least HYG_REST_NS and HYG_REST_N samples over which |f| (the
+ * specific force's magnitude, any unit) stays within HYG_REST_SPREAD of its
+ * mean (max - min <= HYG_REST_SPREAD * mean). At rest |f| is the gravity's
+ * 1 g plus noise and vibration, a few percent peak to peak (the x-io walk:
+ * 2.2 % over its first 5 s); 10 % leaves room for a vibrating vehicle,
+ * while a moving foot or body swings |f| by much more within 0.5 s (the
+ * walk: 0.3 to 4.7 g within a stride). The spread is relative, so a rest
+ * is found whatever unit the file is read in: it is the check's reference,
+ * not its subject. Too tight a spread only leaves a file unchecked, never
+ * refused.
+ * 0.5 s: recordings usually start with seconds at rest, and a moving body
+ * rarely holds |f| that steady that long; 10 samples: a mean of 10
+ * readings at least, also at low rates.
+ */
+#define HYG_REST_NS 500000000 /**< 0.5 s */
+#define HYG_REST_N 10
+#define HYG_REST_SPREAD 0.1
+
+/** The search for the first rest, fed the rows in time order. */
+typedef struct {
+    int64_t t0_ns, t1_ns; /**< the run of steady |f|: first and last time */
+    int64_t n;            /**< samples in it */
+    double sum, lo, hi;   /**< of |f| over it */
+    int found;            /**< the run is a rest (then it stops growing) */
+} hyg_rest_t;
+
+/**
+ * Adds r (after the rows before it; times increasing) to the search
+ * (zeroed before the first row); 1 once the rest is found, its mean |f|
+ * [m/s^2] sum / n.
+ */
+int hygiene_rest(hyg_rest_t *s, const row_t *r);
+
+/** The interval b - a >= 0 from time a to b >= a [ns], saturated at
+ *  INT64_MAX (no overflow whatever the times). */
+int64_t hygiene_interval(int64_t a, int64_t b);
 
 /** Median of dt[0..n-1] (n >= 1; dt is reordered) [ns]. */
 double hygiene_median(int64_t *dt, size_t n);

@@ -8,14 +8,18 @@
  * number). The defaults read x-io's CSV (Time (s), Gyroscope X/Y/Z (deg/s),
  * Accelerometer X/Y/Z (g), one header line).
  *
- * Two passes over the file unless --rate is given: the first reads the
- * first RATE_PREFIX intervals between valid rows for the nominal interval
- * (their median). The output is created at the first valid row, so an
- * input without one leaves no log behind.
+ * Two passes over the file unless --rate and --unit-check off are given:
+ * the first reads the first RATE_PREFIX intervals between valid rows for
+ * the nominal interval (their median) and looks for the first rest, where
+ * the specific force must read about 1 g (the unit check: a file in m/s^2
+ * read as g reads 9.8 g). The output is created at the first valid row of
+ * the second pass, so an input without one, or refused by the first pass,
+ * leaves no log behind.
  *
  * Exit status: 0 done; 1 the input cannot be read, holds no valid row,
- * has no line end within CSV_RUNAWAY_MAX bytes, or the output cannot be
- * written; 2 bad usage (also: --out is the input). Run with --help.
+ * fails the unit check, has no line end within CSV_RUNAWAY_MAX bytes, or
+ * the output cannot be written; 2 bad usage (also: --out is the input).
+ * Run with --help.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
@@ -37,6 +41,17 @@
 #define RATE_PREFIX 10000 /* intervals read for the nominal rate */
 #define AUTO_HEADER_MAX 64 /* lines --header auto may skip */
 #define DEG (3.14159265358979323846 / 180.0)
+/*
+ * The unit check's band for |f| at rest [g]. At rest an accelerometer
+ * reads 1 g: the local gravity (9.78 to 9.83 m/s^2) within its bias and
+ * scale-factor errors, a few percent for consumer MEMS. A file in m/s^2
+ * read as g reads 9.8 g at rest, a file in g read as m/s^2 0.10 g: 6.5
+ * times above the band and 4.9 times below it. The band's width is margin
+ * for a "rest" that is steady motion instead (a vehicle in a steady turn at
+ * 0.5 g lateral reads 1.1 g), not for sensor error.
+ */
+#define REST_G_LO 0.5
+#define REST_G_HI 1.5
 
 typedef struct {
     const char *in;
@@ -45,6 +60,7 @@ typedef struct {
     const char *gyro_cols, *accel_cols, *axes, *accel_misalign;
     int64_t time_col, columns, max_messages;
     int time_unit, gyro_unit, accel_unit;
+    int unit_check; /* 1: the first rest must read about 1 g */
     double g, rate, gyro_range, accel_range;
 } opts_t;
 
@@ -56,10 +72,11 @@ typedef struct {
     lcm_t *lc;
     int64_t messages;     /* per-row messages printed */
     int64_t suppressed;   /* ... and not printed (beyond --max-messages) */
-    int64_t *dt;          /* pre-pass: intervals between valid rows */
+    int64_t *dt;          /* pre-pass: intervals between valid rows (NULL: --rate) */
     size_t n_dt;
     int64_t prev_t;       /* pre-pass: the last valid row's time */
     int have_prev;
+    hyg_rest_t rest;      /* pre-pass: the search for the first rest */
     int ncols;            /* fields a row must have (0: any) */
 } importer_t;
 
@@ -82,12 +99,20 @@ static int find_gyro_unit(const char *v)
     return strcmp(v, "rad/s") == 0 ? 0 : strcmp(v, "deg/s") == 0 ? 1 : -1;
 }
 
+static const char *const accel_units[] = {"m/s2", "g"};
+
 static int find_accel_unit(const char *v)
 {
-    if (strcmp(v, "m/s2") == 0 || strcmp(v, "m/s^2") == 0) {
+    if (strcmp(v, accel_units[0]) == 0 || strcmp(v, "m/s^2") == 0) {
         return 0;
     }
-    return strcmp(v, "g") == 0 ? 1 : -1;
+    return strcmp(v, accel_units[1]) == 0 ? 1 : -1;
+}
+
+/* m/s^2 per unit of accel_units[unit] (1 g is --g). */
+static double accel_scale(const opts_t *o, int unit)
+{
+    return unit == 1 ? o->g : 1.0;
 }
 
 static void usage(FILE *f)
@@ -121,6 +146,8 @@ static void usage(FILE *f)
             "  --rate HZ              nominal rate for gap detection (default: the median\n"
             "                         interval of the first %d intervals, a first pass)\n"
             "  --max-messages N       per-row messages on stderr, then a count (10)\n"
+            "  --unit-check on|off    the first rest (|f| steady within %.0f%% for %.1f s)\n"
+            "                         must read %.1f to %.1f g, else the file is refused (on)\n"
             "Rows repeating the last written timestamp, or earlier, are dropped; a\n"
             "longer interval than the nominal one loses round(interval/nominal - 1)\n"
             "samples and the sequence numbers skip them. Malformed rows (wrong field\n"
@@ -128,7 +155,8 @@ static void usage(FILE *f)
             "over %d bytes) are skipped; a line over %ld bytes refuses the file.\n"
             "Exit status: 0 done, 1 unreadable or refused input, no valid row or\n"
             "write error, 2 bad usage (also: --out is the input file).\n",
-            AUTO_HEADER_MAX, RATE_PREFIX, CSV_LINE_MAX, CSV_RUNAWAY_MAX);
+            AUTO_HEADER_MAX, RATE_PREFIX, 100.0 * HYG_REST_SPREAD, HYG_REST_NS * 1e-9, REST_G_LO,
+            REST_G_HI, CSV_LINE_MAX, CSV_RUNAWAY_MAX);
 }
 
 static void defaults(opts_t *o)
@@ -145,6 +173,7 @@ static void defaults(opts_t *o)
     o->gyro_unit = 1;
     o->accel_unit = 1;
     o->g = 9.80665;
+    o->unit_check = 1;
 }
 
 /* Says what is wrong with the option values (then returns -1). */
@@ -225,7 +254,7 @@ static int setup(importer_t *im)
     }
     m->time_exp = time_exps[o->time_unit];
     m->gyro_scale = o->gyro_unit == 1 ? DEG : 1.0;
-    m->accel_scale = o->accel_unit == 1 ? o->g : 1.0;
+    m->accel_scale = accel_scale(o, o->accel_unit);
     m->gyro_range = o->gyro_range;
     m->accel_range = o->accel_range;
     return 0;
@@ -284,6 +313,7 @@ static int parse_args(int argc, char **argv, importer_t *im)
         {"--accel-range", HOPT_DOUBLE, &o->accel_range, 0.0, inf, NULL},
         {"--rate", HOPT_DOUBLE, &o->rate, 1e-3, 1e9, NULL},
         {"--max-messages", HOPT_I64, &o->max_messages, 0, 0, NULL},
+        {"--unit-check", HOPT_CHOICE, &o->unit_check, 0, 0, harness_on_off},
     };
     defaults(o);
     if (pos == NULL) {
@@ -420,17 +450,25 @@ static int take_row(importer_t *im, const row_t *r, int64_t lineno)
     }
 }
 
-/* Pre-pass: collects intervals; 1 once RATE_PREFIX are in. */
-static int take_interval(importer_t *im, const row_t *r)
+/*
+ * Pre-pass: a valid row. On the rows in time order, collects the intervals
+ * (unless --rate) and looks for the first rest (unless --unit-check off);
+ * 1 once RATE_PREFIX intervals are in and the rest is found.
+ */
+static int take_first(importer_t *im, const row_t *r)
 {
-    if (im->have_prev && r->t_ns > im->prev_t) {
-        im->dt[im->n_dt++] = r->t_ns - im->prev_t;
+    if (im->have_prev && r->t_ns <= im->prev_t) {
+        return 0;
     }
-    if (!im->have_prev || r->t_ns > im->prev_t) {
-        im->prev_t = r->t_ns;
-        im->have_prev = 1;
+    if (im->have_prev && im->dt != NULL && im->n_dt < RATE_PREFIX) {
+        im->dt[im->n_dt++] = hygiene_interval(im->prev_t, r->t_ns);
     }
-    return im->n_dt >= RATE_PREFIX;
+    im->prev_t = r->t_ns;
+    im->have_prev = 1;
+    if (im->o.unit_check) {
+        hygiene_rest(&im->rest, r);
+    }
+    return (im->dt == NULL || im->n_dt >= RATE_PREFIX) && (!im->o.unit_check || im->rest.found);
 }
 
 /* Whether the line in r, after seen header lines, is one more. */
@@ -444,9 +482,9 @@ static int is_header(const importer_t *im, const csv_reader_t *r, int64_t seen)
 
 /*
  * Reads f from the start: header, then every row. main_pass: count, report,
- * write (take_row); otherwise collect intervals (take_interval). Returns 0,
- * or -1 on a read or write error or a runaway line (no line end: the file
- * is refused).
+ * write (take_row); otherwise the pre-pass (take_first). Returns 0, or -1
+ * on a read or write error or a runaway line (no line end: the file is
+ * refused).
  */
 static int scan(importer_t *im, FILE *f, int main_pass)
 {
@@ -489,7 +527,7 @@ static int scan(importer_t *im, FILE *f, int main_pass)
             }
             continue;
         }
-        rc = main_pass ? take_row(im, &row, r->lineno) : take_interval(im, &row);
+        rc = main_pass ? take_row(im, &row, r->lineno) : take_first(im, &row);
     }
     if (r->runaway) {
         fprintf(stderr, PROG ": %s:%lld: no line end within %ld bytes: not a CSV text file, "
@@ -508,38 +546,110 @@ static int scan(importer_t *im, FILE *f, int main_pass)
 }
 
 /*
- * The nominal interval into *nom [ns] (0: unknown, no gap detection) and
- * how it was found into how: --rate, or the median of the first
- * RATE_PREFIX intervals between valid rows (a first pass, then f is
- * rewound). Returns 0, or -1 after saying what failed.
+ * The first pass over f, then f is rewound: the intervals for the nominal
+ * interval (unless --rate) and the first rest (unless --unit-check off);
+ * none with both options. Returns 0, or -1 after saying what failed.
  */
-static int nominal(importer_t *im, FILE *f, double *nom, char *how, size_t n)
+static int first_pass(importer_t *im, FILE *f)
 {
     int rc;
-    if (im->o.rate > 0.0) {
-        *nom = 1e9 / im->o.rate;
-        snprintf(how, n, "--rate %g Hz", im->o.rate);
+    if (im->o.rate > 0.0 && !im->o.unit_check) {
         return 0;
     }
-    im->dt = malloc(RATE_PREFIX * sizeof *im->dt);
-    if (im->dt == NULL) {
-        fprintf(stderr, PROG ": out of memory\n");
-        return -1;
+    if (im->o.rate <= 0.0) {
+        im->dt = malloc(RATE_PREFIX * sizeof *im->dt);
+        if (im->dt == NULL) {
+            fprintf(stderr, PROG ": out of memory\n");
+            return -1;
+        }
     }
     rc = scan(im, f, 0);
     if (rc == 0 && fseek(f, 0, SEEK_SET) != 0) {
-        fprintf(stderr, PROG ": cannot rewind %s (give --rate): %s\n", im->o.in, strerror(errno));
+        fprintf(stderr, PROG ": cannot rewind %s (give --rate and --unit-check off): %s\n",
+                im->o.in, strerror(errno));
         rc = -1;
     }
-    *nom = im->n_dt > 0 ? hygiene_median(im->dt, im->n_dt) : 0.0;
-    if (im->n_dt > 0) {
-        snprintf(how, n, "median of the first %zu intervals", im->n_dt);
-    } else {
-        snprintf(how, n, "unknown: no interval, no gap detection");
-    }
-    free(im->dt);
-    im->dt = NULL;
     return rc;
+}
+
+/*
+ * The nominal interval [ns] (0: unknown, no gap detection), and how it was
+ * found into how: --rate, or the median of the first RATE_PREFIX intervals
+ * between valid rows (the first pass).
+ */
+static double nominal(importer_t *im, char *how, size_t n)
+{
+    if (im->o.rate > 0.0) {
+        snprintf(how, n, "--rate %g Hz", im->o.rate);
+        return 1e9 / im->o.rate;
+    }
+    if (im->n_dt == 0) {
+        snprintf(how, n, "unknown: no interval, no gap detection");
+        return 0.0;
+    }
+    snprintf(how, n, "median of the first %zu intervals", im->n_dt);
+    return hygiene_median(im->dt, im->n_dt);
+}
+
+/* The first rest's mean |f| in g (of --g). */
+static double rest_g(const importer_t *im)
+{
+    return im->rest.sum / (double)im->rest.n / im->o.g;
+}
+
+/*
+ * The unit check on the first pass's rest: 0 if it reads REST_G_LO to
+ * REST_G_HI g (or --unit-check off, or no rest found), else -1 after
+ * saying which --accel-unit would. The gyroscope's unit is not checked:
+ * at rest it reads about 0 in either unit, and in motion a rate 57 times
+ * too small (rad/s read as deg/s, the likely slip with the x-io defaults)
+ * is still the rate of some slower motion.
+ */
+static int unit_verdict(const importer_t *im)
+{
+    double g, raw;
+    char t0[32], t1[32];
+    int k, fit = -1;
+    if (!im->o.unit_check || !im->rest.found) {
+        return 0;
+    }
+    g = rest_g(im);
+    if (g >= REST_G_LO && g <= REST_G_HI) {
+        return 0;
+    }
+    raw = g * im->o.g / im->map.accel_scale; /* |f| at rest in the file's numbers */
+    for (k = 0; k < 2; k++) {
+        const double gk = raw * accel_scale(&im->o, k) / im->o.g;
+        fit = k != im->o.accel_unit && gk >= REST_G_LO && gk <= REST_G_HI ? k : fit;
+    }
+    fprintf(stderr, PROG ": %s: the accelerometer reads %.3g g at rest (t = %s to %s s; 1 g "
+                    "expected, %.1f to %.1f accepted): ", im->o.in, g,
+            fmt_s(im->rest.t0_ns, t0, sizeof t0), fmt_s(im->rest.t1_ns, t1, sizeof t1),
+            REST_G_LO, REST_G_HI);
+    if (fit >= 0) {
+        fprintf(stderr, "is the file in %s? use --accel-unit %s", accel_units[fit],
+                accel_units[fit]);
+    } else {
+        fprintf(stderr, "no --accel-unit fits: check --accel-cols and the file's unit");
+    }
+    fprintf(stderr, " (--unit-check off if that is no rest at 1 g); nothing written\n");
+    return -1;
+}
+
+/* The unit check's line of the summary. */
+static void unit_note(const importer_t *im)
+{
+    char t0[32], t1[32];
+    if (!im->o.unit_check) {
+        printf(PROG ": unit check off\n");
+    } else if (!im->rest.found) {
+        printf(PROG ": unit check: no rest (|f| steady within %.0f %% for %.1f s), the "
+                    "accelerometer's unit not checked\n",
+               100.0 * HYG_REST_SPREAD, HYG_REST_NS * 1e-9);
+    } else {
+        printf(PROG ": unit check: |f| = %.3f g at rest (t = %s to %s s)\n", rest_g(im),
+               fmt_s(im->rest.t0_ns, t0, sizeof t0), fmt_s(im->rest.t1_ns, t1, sizeof t1));
+    }
 }
 
 static void summary(const importer_t *im, double nom, const char *how)
@@ -580,6 +690,7 @@ static void summary(const importer_t *im, double nom, const char *how)
     printf(PROG ": nominal interval %.6f ms (%.3f Hz; %s); samples from t = %s to %s s\n",
            nom * 1e-6, nom > 0.0 ? 1e9 / nom : 0.0, how,
            fmt_s(c->first_t_ns, t0, sizeof t0), fmt_s(c->last_t_ns, t1, sizeof t1));
+    unit_note(im);
     printf(PROG ": counters\n");
     for (k = 0; k < sizeof rows / sizeof rows[0]; k++) {
         printf("  %-20s %lld\n", rows[k].name, (long long)rows[k].n);
@@ -621,12 +732,17 @@ int main(int argc, char **argv)
         fprintf(stderr, PROG ": cannot read %s: %s\n", im.o.in, strerror(errno));
         return 1;
     }
-    rc = nominal(&im, f, &nom, how, sizeof how);
+    rc = first_pass(&im, f);
     if (rc == 0) {
+        rc = unit_verdict(&im);
+    }
+    if (rc == 0) {
+        nom = nominal(&im, how, sizeof how);
         hygiene_init(&im.h, nom);
         rc = scan(&im, f, 1);
     }
     fclose(f);
+    free(im.dt);
     if (im.lc != NULL) {
         lcm_destroy(im.lc);
         if (rc != 0) {
