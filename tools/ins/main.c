@@ -46,6 +46,7 @@ typedef struct {
     int64_t nav_every; /* publish when seq % nav_every == 0 */
     int publish_due;
     int ended;
+    int initialised;       /* the filter had a state at some point */
     int64_t decode_errors; /* messages that failed to decode (any channel) */
     harness_progress_t pr;
 } node_t;
@@ -391,6 +392,7 @@ static void on_imu(const lcm_recv_buf_t *rb, const char *ch, void *user)
         nd->ins.seq % nd->nav_every == 0) {
         nd->publish_due = 1;
     }
+    nd->initialised |= (nd->ins.status & SE23_INS_ST_INITIALISED) != 0; /* also aligned */
     if (se23_ins_take_factor(&nd->ins, &f)) {
         publish_factor(nd, &f);
     }
@@ -448,6 +450,7 @@ static void on_init(const lcm_recv_buf_t *rb, const char *ch, void *user)
     }
     if (se23_ins_init(&nd->ins, m.t_ns, &g) == SE23_OK) {
         nd->publish_due = 1;
+        nd->initialised = 1;
     }
 }
 
@@ -573,10 +576,26 @@ static void run_live(node_t *nd, lcm_t *in)
     }
 }
 
+/* 1 (after saying why on stderr) if the input ended and the filter never
+ * had a state: no navigation came out of the run. */
+static int never_initialised(const node_t *nd)
+{
+    if (nd->initialised) {
+        return 0;
+    }
+    fprintf(stderr, "se23-ins: the input ended and the filter never initialised: %s (%lld IMU "
+                    "samples not used)\n",
+            nd->o.preset != 0 ? "no rest long enough for the preset's static alignment"
+                              : "no initial state (SE23_INIT) accepted",
+            (long long)nd->ins.c.imu_early + nd->ins.c.imu_align);
+    return 1;
+}
+
 /*
  * Exit status: 0; 1 if the input or the output cannot be opened; 2 usage or
  * configuration; 3 the input log was corrupt and bytes of it were skipped
- * (log_skipped_bytes in the summary).
+ * (log_skipped_bytes in the summary); 4 the filter never initialised (no
+ * initial state accepted, or the preset's alignment never found its rest).
  */
 int main(int argc, char **argv)
 {
@@ -585,6 +604,7 @@ int main(int argc, char **argv)
     se23_status_t st;
     lcm_t *in = NULL;
     int64_t skipped = 0;
+    int no_state = 0; /* the filter never initialised */
     double cpu0;
 
     if (parse_args(argc, argv, &nd.o, &cfg) != 0) {
@@ -632,6 +652,7 @@ int main(int argc, char **argv)
         publish_nav(&nd); /* the final state */
         progress(&nd, 1);
         summary(&nd, skipped, cpu_seconds() - cpu0);
+        no_state = never_initialised(&nd);
     }
     if (nd.out != in) {
         lcm_destroy(nd.out);
@@ -639,5 +660,5 @@ int main(int argc, char **argv)
     if (in != NULL) {
         lcm_destroy(in);
     }
-    return skipped < 0 ? 1 : skipped > 0 ? 3 : 0;
+    return skipped < 0 ? 1 : skipped > 0 ? 3 : no_state ? 4 : 0;
 }
