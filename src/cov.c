@@ -66,12 +66,14 @@ static se23_status_t check_loop(const se23_real_t *A, int n, int stride,
         }
         const se23_real_t d = se23_fabs(a[i]);
         s = (d > s) ? d : s;
-        neg = neg || (a[i] < SE23_R(0));
+        if (a[i] < SE23_R(0)) {
+            neg = 1;
+        }
     }
     if (!se23_is_finite(bad)) {
         return SE23_ERR_NONFINITE;
     }
-    if (neg) {
+    if (neg != 0) {
         return SE23_ERR_NOT_PSD; /* a variance is never negative */
     }
     const se23_real_t tol = SE23_R(SE23_CFG_COV_TOL) * s;

@@ -378,7 +378,7 @@ static void constraint_residual(const se23_meas_t *y, int n, unsigned mask,
         const se23_real_t *h = &y->H[S * r], *rr = &y->R[M * r];
         se23_real_t s = SE23_R(0);
         for (int b = 0; b < n / 3; ++b) {
-            if (active(mask, b)) {
+            if (active(mask, b) != 0) {
                 const int l = 3 * b;
                 s = se23_fma(h[l], X[S * l + j], s);
                 s = se23_fma(h[l + 1], X[S * (l + 1) + j], s);
