@@ -536,8 +536,10 @@ static inline int fz_gauss_same(const se23_gauss_t *a, const se23_gauss_t *b)
  * (m + 1) eps of M = [[S, C^T], [C, P]]; a step Phi P Phi^T + Q likewise
  * within a few eps of |Phi| |P| |Phi|^T), while se23_gauss_check judges
  * the result relative to the result's own largest variance. When a step
- * cancels a variance far below the inputs' (a float update with a 1-sigma
- * of 1000 m/s measured to 0.01 m/s, README "Fuzzing"), when exact
+ * cancels the variance of a state correlated with a measured one far below
+ * the inputs' (the measured state itself is exact since the update's
+ * Joseph step, issue 37: a float update with a 1-sigma of 1000 m/s
+ * measured to 0.01 m/s no longer fails, README "Fuzzing"), when exact
  * measurements (R = 0) pin a state through a nearly singular S, or when an
  * input accepted within its own tolerance (an R PSD within 1e-5 of its
  * largest variance) is indefinite at the scale of the others, the result
