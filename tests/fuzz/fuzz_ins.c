@@ -31,6 +31,7 @@
  */
 #include "fuzz.h"
 
+#include "../support/ins_counters.h"
 #include "se23/ins.h"
 
 #define ST_ALL 0x1FFU
@@ -168,28 +169,13 @@ static void override_align(fz_t *f, se23_ins_align_t *a)
 
 #define N_COUNTERS ((int)(sizeof(se23_ins_counters_t) / sizeof(uint32_t)))
 
-static uint32_t imu_sum(const se23_ins_counters_t *c)
-{
-    return c->imu_used + c->imu_early + c->imu_align + c->imu_nonfinite + c->imu_range +
-           c->imu_duplicate + c->imu_out_of_order + c->imu_bad_time + c->imu_bad_dt +
-           c->imu_failed;
-}
-
-/* The gnss_ counters a fix ends in (all but gnss_delayed, a part of
- * gnss_used, and gate_resets, a part of gnss_gated: ins.h). */
-static uint32_t gnss_sum(const se23_ins_counters_t *c)
-{
-    return c->gnss_used + c->gnss_pending_dropped + c->gnss_nonfinite + c->gnss_early +
-           c->gnss_stale + c->gnss_gated + c->gnss_failed;
-}
-
 /* Every fix handed in is in exactly one gnss_ counter, or held. */
 static void check_fixes(const ctx_t *c, const char *what)
 {
     const uint32_t held = c->ins.have_pending ? 1u : 0u;
-    FZ_REQUIRE(gnss_sum(&c->ins.c) + held == c->fixes,
+    FZ_REQUIRE(it_gnss_sum(&c->ins.c) + held == c->fixes,
                "%s: %u fixes handed in, %u counted, %u held", what, (unsigned)c->fixes,
-               (unsigned)gnss_sum(&c->ins.c), (unsigned)held);
+               (unsigned)it_gnss_sum(&c->ins.c), (unsigned)held);
 }
 
 static void check_counters(const se23_ins_counters_t *was, const se23_ins_counters_t *now,
@@ -468,9 +454,9 @@ static void do_imu(fz_t *f, ctx_t *c)
                        "imu: FAILED, not counted in filter_errors");
             c->failed++;
         }
-        FZ_REQUIRE(imu_sum(&c->ins.c) == imu_sum(&was) + 1u,
+        FZ_REQUIRE(it_imu_sum(&c->ins.c) == it_imu_sum(&was) + 1u,
                    "imu: the sample ended in %d imu_ counters (verdict %d)",
-                   (int)(imu_sum(&c->ins.c) - imu_sum(&was)), (int)v);
+                   (int)(it_imu_sum(&c->ins.c) - it_imu_sum(&was)), (int)v);
         check_fixes(c, "imu");
         /* USED: integrated (imu_used), or the sample that completed an
          * alignment (imu_align) */

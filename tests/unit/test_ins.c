@@ -10,26 +10,12 @@
 
 #include <cmocka.h>
 
+#include "ins_counters.h"
 #include "ins_test.h"
 #include "se23/ins.h"
 #include "se23_test.h"
 
 static se23_ins_t ins, copy; /* large: static */
-
-/* Every imu_ counter a sample can end in (ins.h: exactly one of them). */
-static uint32_t imu_sum(const se23_ins_counters_t *c)
-{
-    return c->imu_used + c->imu_early + c->imu_align + c->imu_nonfinite + c->imu_range +
-           c->imu_duplicate + c->imu_out_of_order + c->imu_bad_time + c->imu_bad_dt +
-           c->imu_failed;
-}
-
-/* Every gnss_ counter a fix can end in (ins.h: exactly one of them). */
-static uint32_t gnss_sum(const se23_ins_counters_t *c)
-{
-    return c->gnss_used + c->gnss_pending_dropped + c->gnss_nonfinite + c->gnss_early +
-           c->gnss_stale + c->gnss_gated + c->gnss_failed;
-}
 
 /* A value that made the filter's steps overflow (fuzz_ins, issue 37). */
 #if SE23_CFG_DOUBLE
@@ -314,12 +300,12 @@ static void test_every_sample_ends_in_one_counter_when_the_step_fails(void **sta
     assert_int_equal(it_run_rest(&ins, NULL, NULL, 0, 0, 10), 10);
     ins.g.b_a.v[0] = (se23_real_t)HUGE_MEAN;
     for (int k = 11; k <= 110; ++k) {
-        const uint32_t before = imu_sum(&ins.c);
+        const uint32_t before = it_imu_sum(&ins.c);
         se23_ins_verdict_t v;
         memcpy(&copy, &ins, sizeof ins);
         it_rest_sample(NULL, NULL, NULL, NULL, &w, &f);
         v = se23_ins_imu(&ins, k * IT_DT_NS, k, &w, &f);
-        assert_int_equal(imu_sum(&ins.c), before + 1U);
+        assert_int_equal(it_imu_sum(&ins.c), before + 1U);
         if (v == SE23_INS_FAILED) {
             assert_int_equal(ins.c.imu_failed, copy.c.imu_failed + 1U);
             assert_true(ins.c.filter_errors > copy.c.filter_errors);
@@ -328,7 +314,7 @@ static void test_every_sample_ends_in_one_counter_when_the_step_fails(void **sta
         }
     }
     assert_true(ins.c.imu_failed > 0U);
-    assert_int_equal(imu_sum(&ins.c), 110U);
+    assert_int_equal(it_imu_sum(&ins.c), 110U);
 }
 
 /* Regression (fuzz_ins, issue 37 S7): se23_ins_init accepted b_a = 1e300,
@@ -366,7 +352,7 @@ static void test_init_refuses_means_beyond_the_physical_bounds(void **state)
     }
     assert_int_equal(ins.c.init_rejected, 2);
     assert_int_equal(it_run_rest(&ins, NULL, NULL, 10 * IT_DT_NS, 10, 100), 100);
-    assert_int_equal(imu_sum(&ins.c), 110U);
+    assert_int_equal(it_imu_sum(&ins.c), 110U);
     assert_int_equal(ins.c.filter_errors, 0);
 }
 
@@ -431,7 +417,7 @@ static void test_every_fix_ends_in_one_counter(void **state)
     assert_int_equal(ins.c.gnss_used, 2);
     assert_int_equal(ins.c.gnss_pending_dropped, 1);
     assert_true((ins.status & SE23_INS_ST_GNSS_AIDED) != 0);
-    assert_int_equal(gnss_sum(&ins.c), 11U);
+    assert_int_equal(it_gnss_sum(&ins.c), 11U);
     assert_int_equal(se23_ins_gnss(&ins, NULL), SE23_INS_FAILED);
     assert_int_equal(ins.c.gnss_failed, 1);
 }
@@ -474,7 +460,7 @@ static void test_every_fix_ends_in_one_counter_at_the_bounds(void **state)
     assert_int_equal(ins.c.gnss_failed, 1);
     assert_true(ins.c.filter_errors > copy.c.filter_errors);
     assert_memory_equal(&ins.g, &copy.g, sizeof ins.g);
-    assert_int_equal(gnss_sum(&ins.c), 5U);
+    assert_int_equal(it_gnss_sum(&ins.c), 5U);
 }
 
 /* Regression (fuzz_ins, issue 37 S3): a pending fix vanished uncounted when
@@ -498,10 +484,10 @@ static void test_pending_fix_dropped_by_a_clock_step_is_counted(void **state)
     assert_int_equal(se23_ins_imu(&ins, 22 * IT_DT_NS, 103, &w, &f), SE23_INS_OUTAGE);
     assert_int_equal(ins.have_pending, 0);
     assert_int_equal(ins.c.gnss_pending_dropped, 1);
-    assert_int_equal(gnss_sum(&ins.c), 1U);
+    assert_int_equal(it_gnss_sum(&ins.c), 1U);
     assert_int_equal(it_run_rest(&ins, NULL, NULL, 22 * IT_DT_NS, 103, 100), 100);
     assert_int_equal(ins.c.gnss_used, 0);
-    assert_int_equal(gnss_sum(&ins.c), 1U);
+    assert_int_equal(it_gnss_sum(&ins.c), 1U);
 }
 
 /* Regression (fuzz_ins, issue 37 S3): a pending fix vanished uncounted at a
@@ -528,7 +514,7 @@ static void test_pending_fix_dropped_by_a_new_state_is_counted(void **state)
     assert_int_equal(se23_ins_align(&ins, &a), SE23_ERR_DOMAIN);
     a.sigma_p = SE23_R(1);
     assert_int_equal(ins.have_pending, 1);
-    assert_int_equal(gnss_sum(&ins.c), 0U);
+    assert_int_equal(it_gnss_sum(&ins.c), 0U);
     /* a new init */
     assert_int_equal(se23_ins_init(&ins, 100 * IT_DT_NS, &g), SE23_OK);
     assert_int_equal(ins.have_pending, 0);
@@ -545,7 +531,7 @@ static void test_pending_fix_dropped_by_a_new_state_is_counted(void **state)
     assert_true((ins.status & SE23_INS_ST_LOST) != 0);
     assert_int_equal(ins.have_pending, 0);
     assert_int_equal(ins.c.gnss_pending_dropped, 3);
-    assert_int_equal(gnss_sum(&ins.c), 3U);
+    assert_int_equal(it_gnss_sum(&ins.c), 3U);
 }
 
 /* Regression (fuzz_ins, UBSan): a state near INT64_MAX ns (any t >= 0 is
