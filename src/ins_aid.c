@@ -6,6 +6,7 @@
 
 #include <stddef.h>
 
+#include "kalman_parts.h"
 #include "linalg.h"
 #include "se23_math.h"
 
@@ -19,19 +20,37 @@ static se23_status_t user_state(se23_ins_t *ins)
     return se23_gauss_from_carried(&ins->model, &ins->g, &ins->work);
 }
 
+/* Nonzero if a variance of ins->work is below SE23_KALMAN_PIN_RATIO of
+ * the same variance in ins->g (the state before the updates). */
+static int pinned(const se23_ins_t *ins)
+{
+    int i;
+    for (i = 0; i < ins->work.n; ++i) {
+        const int d = se23_ins_idx(i, i);
+        if (ins->work.P.m[d] < (SE23_KALMAN_PIN_RATIO * ins->g.P.m[d])) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
 /* ins->g = ins->work, back in the model's coordinates, if ins->work is a
  * valid state. An update is PSD to rounding relative to the prior
  * (kalman.h); a state pinned far below the scale of its prior, in a
  * precision too short for the ratio, can come out of it outside the check
- * of gauss.h, and is then refused here (the status of se23_gauss_check,
- * the state kept), so that the filter never holds a state that
- * se23_gauss_check refuses. One 15 x 15 factorisation per committed
- * update. */
+ * of gauss.h. So when the updates left a variance below
+ * SE23_KALMAN_PIN_RATIO (2^-10) of its prior, the state is checked with
+ * se23_gauss_check (one 15 x 15 factorisation) and refused if it fails
+ * (that status, the state kept). Updates that pin nothing (a filter in its
+ * steady state) are PSD to rounding relative to a posterior of their
+ * prior's scale, and skip the check. */
 static se23_status_t commit(se23_ins_t *ins)
 {
-    const se23_status_t st = se23_gauss_check(&ins->work);
-    if (st != SE23_OK) {
-        return st;
+    if (pinned(ins) != 0) {
+        const se23_status_t st = se23_gauss_check(&ins->work);
+        if (st != SE23_OK) {
+            return st;
+        }
     }
     if (ins->cfg.earth_rotation == 0) {
         ins->g = ins->work;

@@ -14,7 +14,9 @@
  * The kernels take m three rows at a time (zero padding), so m counts as
  * a multiple of 3 in the n-sized terms. GNSS position with a lever arm
  * (n = 15, m = 3, a = 6): 270 + 54 + 10 + 9 + 45 + 90 + 360 = 838
- * multiply-adds and 3 square roots for X, 45 + 765 more for K and P+;
+ * multiply-adds and 3 square roots for X; when the update pins a variance
+ * below SE23_KALMAN_PIN_RATIO of its prior (pins_a_variance), 45 + 765
+ * more for K and P+;
  * the dense Joseph form with the same factorisation is about
  * 2 n^3 + 4 n^2 m = 9,500.
  *
@@ -433,6 +435,31 @@ static void joseph_refine(const se23_meas_t *y, int n, unsigned mask,
     se23_cov_clamp_variances(X, n, S);
 }
 
+/* Nonzero if the update left a variance below SE23_KALMAN_PIN_RATIO of
+ * its prior, from X = P - U U^T and U: X_ii < r P_ii = r (X_ii + |U_i|^2),
+ * i.e. (1 - r) X_ii < r |U_i|^2 (no cancellation in the test). Only then
+ * can X's rounding, of order eps P_ii, be a sizeable part of the
+ * posterior (above 2^10 eps of it), and joseph_refine runs; otherwise it
+ * would change nothing that matters, and an update of a filter in its
+ * steady state (a fix, a ZUPT) costs what the Schur complement costs.
+ * n padded(m) multiply-adds. */
+static int pins_a_variance(const se23_real_t *X, const se23_real_t *U, int n, int m)
+{
+    const se23_real_t r = SE23_KALMAN_PIN_RATIO, keep = SE23_R(1) - SE23_KALMAN_PIN_RATIO;
+    int pinned = 0;
+    for (int i = 0; i < n; ++i) {
+        const se23_real_t *u = &U[M * i];
+        se23_real_t q = SE23_R(0);
+        for (int k = 0; k < padded(m); ++k) {
+            q = se23_fma(u[k], u[k], q);
+        }
+        if (keep * X[(S + 1) * i] < r * q) {
+            pinned = 1;
+        }
+    }
+    return pinned;
+}
+
 /* tr P = sum_i P_ii (P PSD: it bounds every P_ii; NaN stays NaN), three
  * partial sums (n = 9 or 15). */
 static se23_real_t trace(const se23_real_t *P, int n)
@@ -479,8 +506,10 @@ se23_status_t se23_kalman_cov_work(const se23_gauss_t *g, const se23_meas_t *y,
     }
     /* Nothing fails from here on; w is free once dx is formed. */
     downdate(g->P.m, U, n, m, Pout);
-    gain_from_u(L, n, m, U);
-    joseph_refine(y, n, mask, U, w, Pout);
+    if (pins_a_variance(Pout, U, n, m) != 0) {
+        gain_from_u(L, n, m, U);
+        joseph_refine(y, n, mask, U, w, Pout);
+    }
     *nis = q;
     return SE23_OK;
 }

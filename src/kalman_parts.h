@@ -43,6 +43,12 @@
 #define SE23_KALMAN_MEAN_MAX (SE23_R(FLT_MAX) / SE23_R(4))
 #endif
 
+/* An update that leaves a variance below this fraction of its prior gets
+ * the Joseph step (kalman_parts.c, joseph_refine); the filter checks its
+ * state after such an update (ins_aid.c). A power of two, so that
+ * 1 - ratio is exact. */
+#define SE23_KALMAN_PIN_RATIO (SE23_R(1) / SE23_R(1024))
+
 /**
  * se23_cov_check (cov.h) of the leading m x m block of A (row stride
  * `stride`), m <= SE23_MEAS_MMAX, with a work buffer sized for m: one
