@@ -290,13 +290,18 @@ se23_ins_verdict_t se23_ins_fuse_gnss(se23_ins_t *ins, const se23_ins_gnss_t *fi
     }
     ins->nis_last = nis_p + nis_v;
     if (out != 0) {
-        se23_ins_count(&ins->c.gnss_gated);
+        se23_ins_verdict_t v = SE23_INS_GATED;
         ins->status |= SE23_INS_ST_GNSS_GATED;
         ins->gated_run++;
         if ((ins->cfg.gate_recover > 0) && (ins->gated_run >= ins->cfg.gate_recover)) {
-            return se23_ins_gate_reset(ins, fix);
+            v = se23_ins_gate_reset(ins, fix);
         }
-        return SE23_INS_GATED;
+        /* a reset fix is also gated; a failed reset is counted as failed
+         * only (gnss_failed), so that the fix is in one counter */
+        if (v != SE23_INS_FAILED) {
+            se23_ins_count(&ins->c.gnss_gated);
+        }
+        return v;
     }
     if (commit(ins) != SE23_OK) {
         se23_ins_count(&ins->c.filter_errors);
