@@ -53,7 +53,8 @@ static void usage(FILE *f)
 {
     fprintf(f, "usage: se23-walk [options] INS_LOG\n"
                "  --csv PATH          per-state CSV (t, position, velocity, speed, its sigma,\n"
-               "                      detector statistic, stance flag)\n"
+               "                      detector statistic, stance flag, position\n"
+               "                      covariance, absolute time [ns])\n"
                "  --plots DIR         CSV and PNG plots into DIR (tools/walk/plot_walk.py)\n"
                "  --plot-script PATH  plotter (tools/walk/plot_walk.py)\n"
                "  --python PATH       interpreter with matplotlib (/usr/bin/python3)\n"
@@ -93,17 +94,21 @@ static void write_csv(const char *path, const log_data_t *d)
         fprintf(stderr, "se23-walk: cannot write %s\n", path);
         return;
     }
-    fprintf(f, "t,pN,pE,pD,vN,vE,vD,speed,sspeed,spN,spE,spD,stat,stance\n");
+    fprintf(f, "t,pN,pE,pD,vN,vE,vD,speed,sspeed,spN,spE,spD,stat,stance,"
+               "cNN,cNE,cND,cEE,cED,cDD,t_ns\n");
     for (k = 0; k < d->n_nav; k++) {
         const se23lcm_nav_state *m = &d->nav[k];
         const double sp = sqrt(m->v_n[0] * m->v_n[0] + m->v_n[1] * m->v_n[1] +
                                m->v_n[2] * m->v_n[2]);
         double C[3][3];
         metrics_nav_cov(m->R_nb, m->P, 6, C); /* position, nav frame */
-        fprintf(f, "%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6g,%.6g,%.6g,%.6g,%d\n",
+        fprintf(f,
+                "%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6g,%.6g,%.6g,%.6g,%d,"
+                "%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%lld\n",
                 (double)(m->t_ns - d->nav[0].t_ns) * 1e-9, m->p_n[0], m->p_n[1], m->p_n[2],
                 m->v_n[0], m->v_n[1], m->v_n[2], sp, speed_sigma(m), sqrt(C[0][0]), sqrt(C[1][1]),
-                sqrt(C[2][2]), m->detector_stat, (m->status & ST_STATIONARY) != 0);
+                sqrt(C[2][2]), m->detector_stat, (m->status & ST_STATIONARY) != 0, C[0][0],
+                C[0][1], C[0][2], C[1][1], C[1][2], C[2][2], (long long)m->t_ns);
     }
     fclose(f);
 }
