@@ -35,6 +35,7 @@
 #include "csv.h"
 #include "hygiene.h"
 #include "row.h"
+#include "se23lcm_imu_info.h"
 #include "se23lcm_imu_sample.h"
 
 #define PROG "se23-import"
@@ -78,6 +79,7 @@ typedef struct {
     int have_prev;
     hyg_rest_t rest;      /* pre-pass: the search for the first rest */
     int ncols;            /* fields a row must have (0: any) */
+    se23lcm_imu_info info; /* the log's first message (rate_hz 0: rate unknown, none) */
 } importer_t;
 
 static const char *const time_units[] = {"s", "ms", "us", "ns"};
@@ -123,7 +125,8 @@ static void usage(FILE *f)
             "The defaults read x-io's CSV: Time (s), Gyroscope X/Y/Z (deg/s),\n"
             "Accelerometer X/Y/Z (g), one header line.\n"
             "  --out URL              LCM URL to write, e.g. file://imu.log?mode=w (required)\n"
-            "  --time-col N           column of the time, from 1 (1)\n"
+            "  --time-col N           column of the time, from 1 (1); 0: none, row k\n"
+            "                         is at k / --rate (then required)\n"
             "  --gyro-cols A,B,C      columns of gyro x,y,z (2,3,4)\n"
             "  --accel-cols A,B,C     columns of accel x,y,z, specific force (5,6,7)\n"
             "  --header N|auto        header lines to skip (1); auto: the leading lines\n"
@@ -183,17 +186,18 @@ static int bad(const char *what, const char *value)
     return -1;
 }
 
-/* The 7 mapped columns are distinct. */
+/* The mapped columns (6, and the time's if there is one) are distinct. */
 static int distinct_cols(const row_map_t *m)
 {
     int c[7], i, j;
-    c[0] = m->time_col;
+    const int n = m->time_col >= 0 ? 7 : 6;
     for (i = 0; i < 3; i++) {
-        c[1 + i] = m->gyro_col[i];
-        c[4 + i] = m->accel_col[i];
+        c[i] = m->gyro_col[i];
+        c[3 + i] = m->accel_col[i];
     }
-    for (i = 0; i < 7; i++) {
-        for (j = i + 1; j < 7; j++) {
+    c[6] = m->time_col;
+    for (i = 0; i < n; i++) {
+        for (j = i + 1; j < n; j++) {
             if (c[i] == c[j]) {
                 return 0;
             }
@@ -208,10 +212,15 @@ static int setup(importer_t *im)
     const opts_t *o = &im->o;
     row_map_t *m = &im->map;
     char *end = NULL;
-    if (o->time_col < 1 || o->time_col > ROW_COLS_MAX) {
-        return bad("--time-col", "(from 1 to 1024)");
+    if (o->time_col < 0 || o->time_col > ROW_COLS_MAX) {
+        return bad("--time-col", "(from 1 to 1024, or 0: no time column)");
     }
-    m->time_col = (int)o->time_col - 1;
+    if (o->time_col == 0 && o->rate <= 0.0) {
+        fprintf(stderr, PROG ": --time-col 0 (no time column) needs --rate HZ: row k is at "
+                        "k / HZ\n");
+        return -1;
+    }
+    m->time_col = (int)o->time_col - 1; /* -1: none */
     if (row_parse_cols(o->gyro_cols, m->gyro_col) != 0) {
         return bad("--gyro-cols", o->gyro_cols);
     }
@@ -390,6 +399,10 @@ static void malformed(importer_t *im, const csv_reader_t *r, row_status_t st,
     } else if (r->has_nul) {
         c->bad_number++;
         row_msg(im, r->lineno, "NUL byte in the line, skipped");
+    } else if (st == ROW_NONFINITE && why->bad_col < 0) {
+        c->bad_nonfinite++;
+        row_msg(im, r->lineno, "time from the row index (k / --rate) beyond int64 nanoseconds, "
+                               "skipped");
     } else if (st == ROW_COLUMNS) {
         c->bad_columns++;
         row_msg(im, r->lineno, "%d field(s), expected %s%d, skipped", why->nfields,
@@ -409,16 +422,29 @@ static void malformed(importer_t *im, const csv_reader_t *r, row_status_t st,
     }
 }
 
+/* Opens the output and writes the log's first message, how its samples are
+ * timed (if the rate is known); -1 on failure. */
+static int open_out(importer_t *im)
+{
+    im->lc = lcm_create(im->o.out);
+    if (im->lc == NULL) {
+        fprintf(stderr, PROG ": cannot open LCM URL %s\n", im->o.out);
+        return -1;
+    }
+    if (im->info.rate_hz > 0.0 &&
+        se23lcm_imu_info_publish(im->lc, HARNESS_CH_IMU_INFO, &im->info) != 0) {
+        fprintf(stderr, PROG ": cannot write to %s\n", im->o.out);
+        return -1;
+    }
+    return 0;
+}
+
 /* Writes the sample of r with sequence number seq; -1 on failure. */
 static int publish(importer_t *im, const row_t *r, int64_t seq)
 {
     se23lcm_imu_sample s;
-    if (im->lc == NULL) {
-        im->lc = lcm_create(im->o.out);
-        if (im->lc == NULL) {
-            fprintf(stderr, PROG ": cannot open LCM URL %s\n", im->o.out);
-            return -1;
-        }
+    if (im->lc == NULL && open_out(im) != 0) {
+        return -1;
     }
     memset(&s, 0, sizeof s);
     s.t_ns = r->t_ns;
@@ -471,6 +497,21 @@ static int take_first(importer_t *im, const row_t *r)
     return (im->dt == NULL || im->n_dt >= RATE_PREFIX) && (!im->o.unit_check || im->rest.found);
 }
 
+/*
+ * Without a time column (--time-col 0), data row k (from 0, malformed rows
+ * counted: each is a sample) is at k / --rate, into row->t_ns; -1 if that
+ * is beyond int64 nanoseconds (292 years).
+ */
+static int time_from_index(const importer_t *im, int64_t k, row_t *row)
+{
+    const double t_ns = (double)k * 1e9 / im->o.rate;
+    if (!(t_ns < 9.2e18)) {
+        return -1;
+    }
+    row->t_ns = llround(t_ns);
+    return 0;
+}
+
 /* Whether the line in r, after seen header lines, is one more. */
 static int is_header(const importer_t *im, const csv_reader_t *r, int64_t seen)
 {
@@ -490,7 +531,7 @@ static int scan(importer_t *im, FILE *f, int main_pass)
 {
     csv_reader_t *r = malloc(sizeof *r);
     import_count_t *c = &im->h.c;
-    int64_t seen = 0;
+    int64_t seen = 0, data_rows = 0;
     int in_header = 1, rc = 0, hdr_cols = 0;
     if (r == NULL) {
         return -1;
@@ -521,6 +562,11 @@ static int scan(importer_t *im, FILE *f, int main_pass)
             continue;
         }
         c->rows += main_pass;
+        if (st == ROW_OK && im->map.time_col < 0 && time_from_index(im, data_rows, &row) != 0) {
+            st = ROW_NONFINITE;
+            why.bad_col = -1; /* no column: the time from the row index */
+        }
+        data_rows++;
         if (st != ROW_OK) {
             if (main_pass) {
                 malformed(im, r, st, &why);
@@ -574,21 +620,30 @@ static int first_pass(importer_t *im, FILE *f)
 
 /*
  * The nominal interval [ns] (0: unknown, no gap detection), and how it was
- * found into how: --rate, or the median of the first RATE_PREFIX intervals
- * between valid rows (the first pass).
+ * found, into how and im->info (the log's first message): --rate (for the
+ * row index without a time column), or the median of the first RATE_PREFIX
+ * intervals between valid rows (the first pass).
  */
 static double nominal(importer_t *im, char *how, size_t n)
 {
+    double nom = 0.0;
+    memset(&im->info, 0, sizeof im->info);
     if (im->o.rate > 0.0) {
-        snprintf(how, n, "--rate %g Hz", im->o.rate);
-        return 1e9 / im->o.rate;
-    }
-    if (im->n_dt == 0) {
+        const int by_index = im->map.time_col < 0;
+        snprintf(how, n, "%s--rate %g Hz", by_index ? "row index, " : "", im->o.rate);
+        im->info.rate_source = by_index ? SE23LCM_IMU_INFO_RATE_ROW_INDEX
+                                        : SE23LCM_IMU_INFO_RATE_GIVEN;
+        nom = 1e9 / im->o.rate;
+    } else if (im->n_dt == 0) {
         snprintf(how, n, "unknown: no interval, no gap detection");
-        return 0.0;
+    } else {
+        snprintf(how, n, "median of the first %zu intervals", im->n_dt);
+        im->info.rate_source = SE23LCM_IMU_INFO_RATE_MEASURED;
+        im->info.n_intervals = (int64_t)im->n_dt;
+        nom = hygiene_median(im->dt, im->n_dt);
     }
-    snprintf(how, n, "median of the first %zu intervals", im->n_dt);
-    return hygiene_median(im->dt, im->n_dt);
+    im->info.rate_hz = nom > 0.0 ? 1e9 / nom : 0.0;
+    return nom;
 }
 
 /* The first rest's mean |f| in g (of --g). */

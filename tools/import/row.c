@@ -123,7 +123,8 @@ row_status_t row_parse(const row_map_t *m, const char *line, int ncols, row_t *o
         set_why(why, nf, -1, NULL);
         return ROW_COLUMNS;
     }
-    r = csv_parse_time(f[m->time_col], m->time_exp, &out->t_ns);
+    out->t_ns = 0;
+    r = m->time_col < 0 ? CSV_NUM_OK : csv_parse_time(f[m->time_col], m->time_exp, &out->t_ns);
     if (r != CSV_NUM_OK) {
         set_why(why, nf, m->time_col, &f[m->time_col]);
         return num_status(r);
@@ -157,7 +158,7 @@ int row_is_header(const row_map_t *m, const char *line)
     if (row_cols_needed(m) > nf) {
         return 1;
     }
-    if (csv_parse_real(f[m->time_col], &x) == CSV_NUM_TEXT) {
+    if (m->time_col >= 0 && csv_parse_real(f[m->time_col], &x) == CSV_NUM_TEXT) {
         return 1;
     }
     for (s = 0; s < 2; s++) {

@@ -20,7 +20,7 @@
 #define ROW_COLS_MAX 1024 /**< highest column number accepted */
 
 typedef struct {
-    int time_col;          /**< 0-based */
+    int time_col;          /**< 0-based; -1: no time column (the caller times the rows) */
     int gyro_col[3];       /**< 0-based */
     int accel_col[3];      /**< 0-based */
     int time_exp;          /**< the time unit is 10^time_exp ns (s 9, ms 6, us 3, ns 0) */
@@ -64,7 +64,8 @@ typedef struct {
  * was wrong. Every converted value (omega, accel: after the units, the
  * axes and the misalignment) is finite for ROW_OK; for ROW_OVERFLOW, why
  * names the largest raw value of the triad that is not. The time needs no
- * such check: csv_parse_time converts exactly, within int64.
+ * such check: csv_parse_time converts exactly, within int64. Without a
+ * time column (time_col -1) out->t_ns is 0: the caller sets it.
  */
 row_status_t row_parse(const row_map_t *m, const char *line, int ncols, row_t *out,
                        row_why_t *why);

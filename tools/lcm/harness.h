@@ -20,6 +20,7 @@
 #define HARNESS_CH_PREINT "SE23_PREINT"     /**< se23lcm_preint_factor_t */
 #define HARNESS_CH_SIM_INFO "SE23_SIM_INFO" /**< se23lcm_sim_info_t, at start */
 #define HARNESS_CH_SIM_END "SE23_SIM_END"   /**< se23lcm_sim_info_t, at the end */
+#define HARNESS_CH_IMU_INFO "SE23_IMU_INFO" /**< se23lcm_imu_info_t, before the first sample */
 
 /** Default live transport (needs the private network namespace, live.sh). */
 #define HARNESS_LIVE_URL "udpm://239.255.76.67:7667?ttl=0"
