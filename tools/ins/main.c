@@ -20,18 +20,47 @@
 #include "se23/earth.h"
 #include "se23/ins.h"
 #include "se23lcm_gnss_fix.h"
+#include "se23lcm_imu_info.h"
 #include "se23lcm_imu_sample.h"
 #include "se23lcm_nav_state.h"
 #include "se23lcm_preint_factor.h"
 #include "se23lcm_sim_info.h"
 
 #define DEG (3.14159265358979323846 / 180.0)
+#define DEFAULT_IMU_RATE 200.0 /* [Hz] without --imu-rate and without SE23_IMU_INFO */
+
+/*
+ * How far --imu-rate may be from the rate the log carries (SE23_IMU_INFO),
+ * relative. The filter integrates each sample over its own timestamps; the
+ * nominal rate only scales the per-sample noise (density * sqrt(rate)) and
+ * sets lengths counted in samples (detector window, largest gap, delay
+ * ring): 1 % changes them by 0.5 to 1 %, which no result shows. A sensor's
+ * clock is off its nominal rate by up to a fraction of a percent (the x-io
+ * walk: 398.3 Hz measured for a nominal 400, 0.4 %), so the data sheet's
+ * rate passes for the measured one; a wrong rate is wrong by more: the
+ * smallest mix-up in the corpus, 200 Hz for gaitmap's 204.8 Hz, is 2.3 %,
+ * and the usual ones are factors of 2.
+ */
+#define RATE_TOLERANCE 0.01
+
+/* Exit status when the log's rate cannot be used (main). */
+#define EXIT_RATE_REFUSED 5
+
+/* The filter's options as given; the configuration is built from them once
+ * the IMU rate is known (configure). */
+typedef struct {
+    double imu_rate; /* --imu-rate [Hz]; 0: not given */
+    double lat_deg, max_gap, gate, horizon, max_outage, preint, lever[3];
+    double alpha, zupt_sv, floor_sigma;
+    int64_t recover, window;
+    int profile, earth, bias, zupt;
+} filter_opts_t;
 
 typedef struct {
     const char *in_url;
     const char *out_url;
     int preset;         /* 0 none, 1 foot */
-    se23_ins_align_t align; /* the preset's alignment request */
+    filter_opts_t f;
     double nav_rate;
     int progress;
     int exit_on_end;
@@ -43,6 +72,11 @@ typedef struct {
     se23_ins_t ins;
     node_opts_t o;
     lcm_t *out;
+    double imu_rate;       /* the filter's nominal rate [Hz] ... */
+    const char *rate_from; /* ... from --imu-rate, the log or the default */
+    double log_rate;       /* the rate of the log's SE23_IMU_INFO (0: none yet) */
+    int rate_refused;      /* the log's rate cannot be used: stop (EXIT_RATE_REFUSED) */
+    int started;           /* an input reached the filter: its rate is fixed */
     int64_t nav_every; /* publish when seq % nav_every == 0 */
     int publish_due;
     int ended;
@@ -63,7 +97,9 @@ static void usage(FILE *f)
             "                        foot-mounted consumer MEMS IMU, ZUPT/ZARU, static\n"
             "                        alignment at the first rest, no GNSS; replaces the\n"
             "                        noise, detector and filter options)\n"
-            "  --imu-rate HZ         nominal IMU rate (200)\n"
+            "  --imu-rate HZ         nominal IMU rate (the log's SE23_IMU_INFO, written\n"
+            "                        by se23-import, else 200); one that differs from the\n"
+            "                        log's by more than 1 %% is refused (exit status 5)\n"
             "  --earth on|off        rotating-Earth model (on)\n"
             "  --lat DEG             latitude of the nav-frame origin (45)\n"
             "  --bias-states on|off  15-state filter with bias states (on)\n"
@@ -154,66 +190,86 @@ static int preset_find(const char *name)
     return strcmp(name, "none") == 0 ? 0 : strcmp(name, "foot") == 0 ? 1 : -1;
 }
 
-static int parse_args(int argc, char **argv, node_opts_t *o, se23_ins_config_t *c)
+static int parse_args(int argc, char **argv, node_opts_t *o)
 {
     const double inf = HUGE_VAL;
-    double rate = 200.0, lat_deg = 45.0, max_gap = -1.0, gate = 30.0, horizon = -1.0;
-    double max_outage = 10.0, preint = 0.0, lever[3] = {0.0, 0.0, 0.0};
-    int64_t recover = 5, window = 20;
-    double alpha = 0.01, zupt_sv = -1.0, floor_sigma = -1.0;
-    int profile = HARNESS_IMU_MEMS, earth = 1, bias = 1, zupt = 0, i;
-    const harness_imu_profile_t *prof;
+    filter_opts_t *f = &o->f;
     const harness_opt_t opts[] = {
         {"--in", HOPT_STR, &o->in_url, 0, 0, NULL},
         {"--out", HOPT_STR, &o->out_url, 0, 0, NULL},
-        {"--imu", HOPT_CHOICE, &profile, 0, 0, harness_imu_profile_find},
+        {"--imu", HOPT_CHOICE, &f->profile, 0, 0, harness_imu_profile_find},
         {"--preset", HOPT_CHOICE, &o->preset, 0, 0, preset_find},
-        {"--imu-rate", HOPT_DOUBLE, &rate, 1.0, 1e5, NULL},
-        {"--earth", HOPT_CHOICE, &earth, 0, 0, harness_on_off},
-        {"--lat", HOPT_DOUBLE, &lat_deg, -90.0, 90.0, NULL},
-        {"--bias-states", HOPT_CHOICE, &bias, 0, 0, harness_on_off},
+        {"--imu-rate", HOPT_DOUBLE, &f->imu_rate, 1.0, 1e5, NULL},
+        {"--earth", HOPT_CHOICE, &f->earth, 0, 0, harness_on_off},
+        {"--lat", HOPT_DOUBLE, &f->lat_deg, -90.0, 90.0, NULL},
+        {"--bias-states", HOPT_CHOICE, &f->bias, 0, 0, harness_on_off},
         {"--nav-rate", HOPT_DOUBLE, &o->nav_rate, 1e-3, inf, NULL},
-        {"--gate", HOPT_DOUBLE, &gate, 0.0, inf, NULL},
-        {"--gate-recover", HOPT_I64, &recover, 0, 0, NULL},
-        {"--lever", HOPT_VEC3, lever, -100.0, 100.0, NULL},
-        {"--delay-horizon", HOPT_DOUBLE, &horizon, 0.0, 10.0, NULL},
-        {"--zupt", HOPT_CHOICE, &zupt, 0, 0, harness_on_off},
-        {"--zupt-window", HOPT_I64, &window, 0, 0, NULL},
-        {"--zupt-alpha", HOPT_DOUBLE, &alpha, 1e-6, 0.5, NULL},
-        {"--zupt-sigma-v", HOPT_DOUBLE, &zupt_sv, 1e-6, 1e3, NULL},
-        {"--floor-sigma", HOPT_DOUBLE, &floor_sigma, 0.0, 1e3, NULL},
-        {"--max-gap", HOPT_DOUBLE, &max_gap, 1e-6, 1.0, NULL},
-        {"--max-outage", HOPT_DOUBLE, &max_outage, 0.0, (double)SE23_INS_MAX_OUTAGE, NULL},
-        {"--preint", HOPT_DOUBLE, &preint, 0.0, inf, NULL},
+        {"--gate", HOPT_DOUBLE, &f->gate, 0.0, inf, NULL},
+        {"--gate-recover", HOPT_I64, &f->recover, 0, 0, NULL},
+        {"--lever", HOPT_VEC3, f->lever, -100.0, 100.0, NULL},
+        {"--delay-horizon", HOPT_DOUBLE, &f->horizon, 0.0, 10.0, NULL},
+        {"--zupt", HOPT_CHOICE, &f->zupt, 0, 0, harness_on_off},
+        {"--zupt-window", HOPT_I64, &f->window, 0, 0, NULL},
+        {"--zupt-alpha", HOPT_DOUBLE, &f->alpha, 1e-6, 0.5, NULL},
+        {"--zupt-sigma-v", HOPT_DOUBLE, &f->zupt_sv, 1e-6, 1e3, NULL},
+        {"--floor-sigma", HOPT_DOUBLE, &f->floor_sigma, 0.0, 1e3, NULL},
+        {"--max-gap", HOPT_DOUBLE, &f->max_gap, 1e-6, 1.0, NULL},
+        {"--max-outage", HOPT_DOUBLE, &f->max_outage, 0.0, (double)SE23_INS_MAX_OUTAGE, NULL},
+        {"--preint", HOPT_DOUBLE, &f->preint, 0.0, inf, NULL},
         {"--idle-timeout", HOPT_DOUBLE, &o->idle_timeout, 0.0, inf, NULL},
         {"--ready-file", HOPT_STR, &o->ready_file, 0, 0, NULL},
         {"--exit-on-end", HOPT_FLAG, &o->exit_on_end, 1, 0, NULL},
         {"--progress", HOPT_FLAG, &o->progress, 1, 0, NULL},
     };
+    memset(o, 0, sizeof *o);
     o->in_url = "file://sim.log?speed=0";
-    o->out_url = NULL;
-    o->preset = 0;
     o->nav_rate = 50.0;
-    o->progress = 0;
-    o->exit_on_end = 0;
-    o->idle_timeout = 0.0;
-    o->ready_file = NULL;
+    f->lat_deg = 45.0;
+    f->max_gap = -1.0;
+    f->gate = 30.0;
+    f->horizon = -1.0;
+    f->max_outage = 10.0;
+    f->alpha = 0.01;
+    f->zupt_sv = -1.0;
+    f->floor_sigma = -1.0;
+    f->recover = 5;
+    f->window = 20;
+    f->profile = HARNESS_IMU_MEMS;
+    f->earth = 1;
+    f->bias = 1;
     if (harness_parse_opts("se23-ins", argc, argv, opts, (int)(sizeof opts / sizeof opts[0]),
                            usage, NULL, NULL) != 0) {
         return -1;
     }
-    if (recover < 0 || recover > 1000000) {
+    if (f->recover < 0 || f->recover > 1000000) {
         fprintf(stderr, "se23-ins: --gate-recover must be in [0, 1e6]\n");
         return -1;
     }
-    if (window < 2 || window > SE23_STATIONARY_WMAX) {
+    if (f->window < 2 || f->window > SE23_STATIONARY_WMAX) {
         fprintf(stderr, "se23-ins: --zupt-window must be in [2, %d]\n", SE23_STATIONARY_WMAX);
         return -1;
     }
-    prof = harness_imu_profile(profile);
+    if (f->floor_sigma >= 0.0 && o->preset != 1) {
+        fprintf(stderr, "se23-ins: --floor-sigma needs --preset foot (its step and swing)\n");
+        return -1;
+    }
     if (o->out_url == NULL) {
         o->out_url = strncmp(o->in_url, "file://", 7) == 0 ? "file://ins.log?mode=w" : o->in_url;
     }
+    return 0;
+}
+
+/*
+ * The filter's configuration (and the preset's alignment request) from the
+ * options at the IMU rate [Hz], which rate_from names; -1 after a message
+ * if the preset refuses the rate.
+ */
+static int build_config(const node_opts_t *o, double rate, const char *rate_from,
+                        se23_ins_config_t *c, se23_ins_align_t *align)
+{
+    const filter_opts_t *f = &o->f;
+    const harness_imu_profile_t *prof = harness_imu_profile(f->profile);
+    int i;
     memset(c, 0, sizeof *c);
     c->noise.gyro_noise = prof->gyro_noise;
     c->noise.accel_noise = prof->accel_noise;
@@ -221,41 +277,70 @@ static int parse_args(int argc, char **argv, node_opts_t *o, se23_ins_config_t *
     c->noise.accel_walk = prof->accel_bias_rw;
     c->gyro_range = prof->gyro_range;
     c->accel_range = prof->accel_range;
-    c->lat = lat_deg * DEG;
-    c->earth_rotation = earth;
-    c->bias_states = bias;
+    c->lat = f->lat_deg * DEG;
+    c->earth_rotation = f->earth;
+    c->bias_states = f->bias;
     c->dt_nominal = 1.0 / rate;
-    c->max_gap = max_gap > 0.0 ? max_gap : fmin(25.0 / rate, 1.0);
+    c->max_gap = f->max_gap > 0.0 ? f->max_gap : fmin(25.0 / rate, 1.0);
     if (c->max_gap < c->dt_nominal) {
         c->max_gap = c->dt_nominal;
     }
-    c->max_outage = max_outage;
+    c->max_outage = f->max_outage;
     c->outage_accel = 1.0;
     c->outage_rate = 0.05;
     for (i = 0; i < 3; i++) {
-        c->lever_b.v[i] = lever[i];
+        c->lever_b.v[i] = f->lever[i];
     }
-    c->gnss_gate = gate;
-    c->gate_recover = (int)recover;
+    c->gnss_gate = f->gate;
+    c->gate_recover = (int)f->recover;
     /* default: 0.25 s, or what the ring holds at this rate */
-    c->delay_horizon = horizon >= 0.0 ? horizon
-                                      : fmin(0.25, (SE23_INS_RING - 3) * c->dt_nominal / 2.0);
-    c->preint_window = preint;
-    c->zupt = zupt;
-    zupt_config(prof, rate, lat_deg * DEG, (int)window, alpha, c);
-    if (o->preset == 1 && se23_ins_preset_foot(rate, lat_deg * DEG, c, &o->align) != SE23_OK) {
-        fprintf(stderr, "se23-ins: --preset foot needs --imu-rate in [50, 10000]\n");
+    c->delay_horizon = f->horizon >= 0.0 ? f->horizon
+                                         : fmin(0.25, (SE23_INS_RING - 3) * c->dt_nominal / 2.0);
+    c->preint_window = f->preint;
+    c->zupt = f->zupt;
+    zupt_config(prof, rate, f->lat_deg * DEG, (int)f->window, f->alpha, c);
+    if (o->preset == 1 && se23_ins_preset_foot(rate, f->lat_deg * DEG, c, align) != SE23_OK) {
+        fprintf(stderr, "se23-ins: --preset foot needs an IMU rate in [50, 10000] Hz, not "
+                        "%g Hz (%s)\n", rate, rate_from);
         return -1;
     }
-    if (zupt_sv > 0.0) {
-        c->zupt_sigma_v = zupt_sv;
+    if (f->zupt_sv > 0.0) {
+        c->zupt_sigma_v = f->zupt_sv;
     }
-    if (floor_sigma >= 0.0) {
-        if (o->preset != 1) {
-            fprintf(stderr, "se23-ins: --floor-sigma needs --preset foot (its step and swing)\n");
-            return -1;
-        }
-        c->floor_sigma = floor_sigma;
+    if (f->floor_sigma >= 0.0) {
+        c->floor_sigma = f->floor_sigma;
+    }
+    return 0;
+}
+
+/*
+ * Sets the filter up, empty, for the IMU rate [Hz] from rate_from: the
+ * configuration, the preset's alignment, the output decimation. Returns 0,
+ * or -1 after saying why.
+ */
+static int configure(node_t *nd, double rate, const char *rate_from)
+{
+    se23_ins_config_t cfg;
+    se23_ins_align_t align;
+    se23_status_t st;
+    if (build_config(&nd->o, rate, rate_from, &cfg, &align) != 0) {
+        return -1;
+    }
+    if ((st = se23_ins_setup(&cfg, &nd->ins)) != SE23_OK) {
+        fprintf(stderr, "se23-ins: invalid configuration at %g Hz (%s%s)\n", rate,
+                se23_status_str(st),
+                st == SE23_ERR_DIM ? ": --delay-horizon too long for the ring at this rate" : "");
+        return -1;
+    }
+    if (nd->o.preset != 0 && se23_ins_align(&nd->ins, &align) != SE23_OK) {
+        fprintf(stderr, "se23-ins: the preset's alignment request was refused\n");
+        return -1;
+    }
+    nd->imu_rate = rate;
+    nd->rate_from = rate_from;
+    nd->nav_every = llround(1.0 / (cfg.dt_nominal * nd->o.nav_rate));
+    if (nd->nav_every < 1) {
+        nd->nav_every = 1;
     }
     return 0;
 }
@@ -381,6 +466,7 @@ static void on_imu(const lcm_recv_buf_t *rb, const char *ch, void *user)
         nd->decode_errors++;
         return;
     }
+    nd->started = 1;
     if (nd->publish_due) { /* the state at t_last, with any fix applied there */
         publish_nav(nd);
     }
@@ -418,6 +504,7 @@ static void on_gnss(const lcm_recv_buf_t *rb, const char *ch, void *user)
         fix.sigma_v.v[i] = m.sigma_v[i];
     }
     fix.has_vel = m.has_vel != 0;
+    nd->started = 1;
     (void)se23_ins_gnss(&nd->ins, &fix);
 }
 
@@ -448,6 +535,7 @@ static void on_init(const lcm_recv_buf_t *rb, const char *ch, void *user)
             g.P.m[SE23_GAUSS_NMAX * i + j] = m.P[15 * i + j];
         }
     }
+    nd->started = 1;
     if (se23_ins_init(&nd->ins, m.t_ns, &g) == SE23_OK) {
         nd->publish_due = 1;
         nd->initialised = 1;
@@ -464,6 +552,71 @@ static void on_end(const lcm_recv_buf_t *rb, const char *ch, void *user)
         return;
     }
     nd->ended = 1;
+}
+
+/* How the log's rate was obtained (imu_info.lcm), for messages. */
+static const char *rate_source_str(int source)
+{
+    switch (source) {
+    case SE23LCM_IMU_INFO_RATE_MEASURED:
+        return "measured from the timestamps by se23-import";
+    case SE23LCM_IMU_INFO_RATE_GIVEN:
+        return "given to se23-import";
+    case SE23LCM_IMU_INFO_RATE_ROW_INDEX:
+        return "given to se23-import, times from the row index";
+    default:
+        return "of unknown origin";
+    }
+}
+
+/*
+ * The log's rate (SE23_IMU_INFO) against the filter's. The filter's rate is
+ * fixed once --imu-rate gave it or an input reached the filter: the log's
+ * must then agree within RATE_TOLERANCE. Otherwise the filter is set up
+ * again, for the log's rate. Returns 0, or -1 after saying why the log's
+ * rate is refused.
+ */
+static int take_log_rate(node_t *nd, const se23lcm_imu_info *m)
+{
+    const char *how = rate_source_str(m->rate_source);
+    double off;
+    if (!(m->rate_hz >= 1.0 && m->rate_hz <= 1e5)) {
+        fprintf(stderr, "se23-ins: the log's IMU rate (SE23_IMU_INFO, %s) is %g Hz, outside 1 "
+                        "to 1e5 Hz: refused\n", how, m->rate_hz);
+        return -1;
+    }
+    nd->log_rate = m->rate_hz;
+    if (nd->o.f.imu_rate <= 0.0 && !nd->started) {
+        return configure(nd, m->rate_hz, "SE23_IMU_INFO");
+    }
+    off = fabs(nd->imu_rate / m->rate_hz - 1.0);
+    if (off <= RATE_TOLERANCE) {
+        return 0;
+    }
+    if (nd->o.f.imu_rate > 0.0) {
+        fprintf(stderr, "se23-ins: --imu-rate %g Hz contradicts the log's %g Hz", nd->imu_rate,
+                m->rate_hz);
+    } else {
+        fprintf(stderr, "se23-ins: the log's %g Hz comes after inputs the filter took at %g Hz "
+                        "(%s) and contradicts it", m->rate_hz, nd->imu_rate, nd->rate_from);
+    }
+    fprintf(stderr, " (SE23_IMU_INFO, %s) by %.2g %%, more than %g %%: refused\n", how,
+            100.0 * off, 100.0 * RATE_TOLERANCE);
+    return -1;
+}
+
+static void on_info(const lcm_recv_buf_t *rb, const char *ch, void *user)
+{
+    node_t *nd = user;
+    se23lcm_imu_info m;
+    (void)ch;
+    if (se23lcm_imu_info_decode(rb->data, 0, (int)rb->data_size, &m) < 0) {
+        nd->decode_errors++;
+        return;
+    }
+    if (take_log_rate(nd, &m) != 0) {
+        nd->rate_refused = 1;
+    }
 }
 
 static double cpu_seconds(void)
@@ -523,11 +676,15 @@ static void summary(const node_t *nd, int64_t skipped, double cpu_s)
     printf("  %-20s %.3f\n", "zupt_nis_mean",
            c->zupt_used > 0U ? (double)nd->ins.zupt_nis_sum / (double)c->zupt_used : 0.0);
     printf("  %-20s 0x%03x\n", "status", (unsigned)nd->ins.status);
+    printf("  %-20s %.3f\n", "imu_rate_hz", nd->imu_rate);
+    printf("  %-20s %s\n", "imu_rate_from", nd->rate_from);
+    printf("  %-20s %.3f\n", "log_imu_rate_hz", nd->log_rate);
     printf("  %-20s %.3f\n", "cpu_seconds", cpu_s);
     printf("  %-20s %.0f\n", "samples_per_s", cpu_s > 0.0 ? (double)c->imu_used / cpu_s : 0.0);
 }
 
 static const replay_sub_t subs[] = {
+    {HARNESS_CH_IMU_INFO, on_info, 0},
     {HARNESS_CH_IMU, on_imu, 10000},
     {HARNESS_CH_GNSS, on_gnss, 1000},
     {HARNESS_CH_INIT, on_init, 0},
@@ -538,7 +695,7 @@ static const replay_sub_t subs[] = {
 static int should_stop(void *user)
 {
     const node_t *nd = user;
-    return harness_stop_requested() || (nd->o.exit_on_end && nd->ended);
+    return harness_stop_requested() || (nd->o.exit_on_end && nd->ended) || nd->rate_refused;
 }
 
 static void ready(const node_t *nd)
@@ -597,36 +754,30 @@ static int never_initialised(const node_t *nd)
  * Exit status: 0; 1 if the input or the output cannot be opened; 2 usage or
  * configuration; 3 the input log was corrupt and bytes of it were skipped
  * (log_skipped_bytes in the summary); 4 the filter never initialised (no
- * initial state accepted, or the preset's alignment never found its rest).
+ * initial state accepted, or the preset's alignment never found its rest);
+ * 5 (EXIT_RATE_REFUSED) the log's IMU rate (SE23_IMU_INFO) cannot be used:
+ * it contradicts --imu-rate, or the rate the filter already ran at, by more
+ * than RATE_TOLERANCE, or the configuration refuses it (the run stops there,
+ * without a summary).
  */
 int main(int argc, char **argv)
 {
     static node_t nd; /* large (the filter holds covariances): not on the stack */
-    se23_ins_config_t cfg;
-    se23_status_t st;
     lcm_t *in = NULL;
     int64_t skipped = 0;
     int no_state = 0; /* the filter never initialised */
     double cpu0;
 
-    if (parse_args(argc, argv, &nd.o, &cfg) != 0) {
+    if (parse_args(argc, argv, &nd.o) != 0) {
         usage(stderr);
         return 2;
     }
-    if ((st = se23_ins_setup(&cfg, &nd.ins)) != SE23_OK) {
-        fprintf(stderr, "se23-ins: invalid configuration (%s%s)\n", se23_status_str(st),
-                st == SE23_ERR_DIM ? ": --delay-horizon too long for the ring at this rate" : "");
-        return 2;
-    }
-    if (nd.o.preset != 0 && se23_ins_align(&nd.ins, &nd.o.align) != SE23_OK) {
-        fprintf(stderr, "se23-ins: the preset's alignment request was refused\n");
+    /* the rate until the log's SE23_IMU_INFO, if any, says otherwise */
+    if (nd.o.f.imu_rate > 0.0 ? configure(&nd, nd.o.f.imu_rate, "--imu-rate") != 0
+                              : configure(&nd, DEFAULT_IMU_RATE, "default") != 0) {
         return 2;
     }
     harness_progress_init(&nd.pr);
-    nd.nav_every = llround(1.0 / (cfg.dt_nominal * nd.o.nav_rate));
-    if (nd.nav_every < 1) {
-        nd.nav_every = 1;
-    }
     if (strncmp(nd.o.in_url, "file://", 7) != 0) {
         in = lcm_create(nd.o.in_url);
         if (in == NULL) {
@@ -650,7 +801,7 @@ int main(int argc, char **argv)
         ready(&nd);
         skipped = replay_file(nd.o.in_url, subs, N_SUBS, &nd, should_stop);
     }
-    if (skipped >= 0) {
+    if (skipped >= 0 && !nd.rate_refused) {
         publish_nav(&nd); /* the final state */
         progress(&nd, 1);
         summary(&nd, skipped, cpu_seconds() - cpu0);
@@ -661,6 +812,9 @@ int main(int argc, char **argv)
     }
     if (in != NULL) {
         lcm_destroy(in);
+    }
+    if (nd.rate_refused) {
+        return EXIT_RATE_REFUSED;
     }
     return skipped < 0 ? 1 : skipped > 0 ? 3 : no_state ? 4 : 0;
 }
