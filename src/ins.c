@@ -66,7 +66,8 @@ static se23_status_t config_check(const se23_ins_config_t *cfg)
         cfg->outage_rate, cfg->lever_b.v[0], cfg->lever_b.v[1], cfg->lever_b.v[2],
         cfg->gnss_gate, cfg->delay_horizon, cfg->preint_window, cfg->zupt_sigma_v,
         cfg->zaru_sigma_w, cfg->zaru_after, cfg->floor_sigma, cfg->floor_step,
-        cfg->floor_swing};
+        cfg->floor_swing, cfg->motion.gyro_scale, cfg->motion.accel_scale, cfg->motion.gyro_g,
+        cfg->motion.corr_time};
     const size_t n_bytes = sizeof reals;
     const int n_reals = (int)n_bytes / (int)sizeof reals[0];
     int i;
@@ -89,7 +90,13 @@ static se23_status_t config_check(const se23_ins_config_t *cfg)
         (cfg->outage_rate > cfg->gyro_range) || (cfg->max_outage > SE23_INS_MAX_OUTAGE) ||
         (is_flag(cfg->earth_rotation) == 0) || (is_flag(cfg->bias_states) == 0) ||
         (is_flag(cfg->zupt) == 0) || (cfg->gate_recover < 0) ||
-        (cfg->zaru_after > SE23_INS_MAX_OUTAGE) || (cfg->floor_swing > SE23_INS_MAX_OUTAGE)) {
+        (cfg->zaru_after > SE23_INS_MAX_OUTAGE) || (cfg->floor_swing > SE23_INS_MAX_OUTAGE) ||
+        (is_flag(cfg->gravity_test_off) == 0)) {
+        return SE23_ERR_DOMAIN;
+    }
+    /* bounds far beyond any sensor's that keep the motion noise finite */
+    if ((cfg->motion.gyro_scale > SE23_R(1)) || (cfg->motion.accel_scale > SE23_R(1)) ||
+        (cfg->motion.gyro_g > SE23_R(1)) || (cfg->motion.corr_time > SE23_R(1))) {
         return SE23_ERR_DOMAIN;
     }
     if ((cfg->zupt != 0) && (cfg->zupt_sigma_v <= SE23_R(0))) {

@@ -82,7 +82,7 @@ static se23_real_t accel_nis(const se23_ins_t *ins, const se23_vec3_t *fbar_n,
  * window, so a smooth start (acceleration growing from zero, which only
  * turns the mean specific force) passes it; the filter knows where gravity
  * is, so the window's mean acceleration must also be noise: accel_nis below
- * the chi^2_3 quantile ACCEL_TEST_Q.
+ * the chi^2_3 quantile ACCEL_TEST_Q (unless gravity_test_off).
  */
 static int stationary_window(se23_ins_t *ins, const se23_imu_sample_t *s)
 {
@@ -96,6 +96,9 @@ static int stationary_window(se23_ins_t *ins, const se23_imu_sample_t *s)
     if ((se23_stationary_add(&ins->det, &w, &f_n, &stationary) != SE23_OK) || (stationary == 0) ||
         (se23_stationary_mean(&ins->det, &w_mean, &fbar_n) != SE23_OK)) {
         return 0; /* moving, or (absurd readings) a detector overflow */
+    }
+    if (ins->cfg.gravity_test_off != 0) {
+        return 1;
     }
     return (accel_nis(ins, &fbar_n, &f) < ACCEL_TEST_Q) ? 1 : 0;
 }

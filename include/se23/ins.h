@@ -105,8 +105,8 @@
  * any fix within the horizon has a snapshot before it. Fusing a fix stamped
  * d seconds late costs the replay of up to d + delay_horizon seconds of
  * samples (prediction and the zero-velocity updates), in that call.
- * Memory: sizeof(se23_ins_t) = 17,496 B + SE23_INS_RING x 72 B in double,
- * 8,976 B + SE23_INS_RING x 48 B in float (26,712 / 15,120 B with the
+ * Memory: sizeof(se23_ins_t) = 17,536 B + SE23_INS_RING x 72 B in double,
+ * 8,992 B + SE23_INS_RING x 48 B in float (26,752 / 15,136 B with the
  * default ring; README "The navigation filter"; test_ins.c asserts it),
  * the kernels' work areas included (1,512 / 756 B, kept here and not on
  * the stack of the calls);
@@ -123,7 +123,11 @@
  * the gravity direction from the window, a start whose acceleration grows
  * smoothly from zero would pass it; the filter knows where gravity is and
  * also requires the window's mean acceleration R fbar + g to be noise
- * (src/ins.c, at_rest). While the window is stationary, each
+ * (src/ins_rest.c, accel_nis), unless gravity_test_off is set: a
+ * foot has no smooth starts (a swing begins with a heel lift at over
+ * 100 deg/s, which SHOE's gyro term sees), and a test against the
+ * filter's own attitude would keep a filter that missed one stance from
+ * every later one. While the window is stationary, each
  * sample applies v = 0 (nav frame, 1-sigma zupt_sigma_v) and, with bias
  * states, once the rest has lasted zaru_after seconds, w_meas + b_g =
  * R^T Omega (the Earth rate a body at rest senses; zero on flat Earth;
@@ -131,6 +135,19 @@
  * attitude error neglected). The delay keeps ZARU out of short stances in
  * which the body still turns (a foot's, 45-70 ms). Counted in zupt_used /
  * zaru_used.
+ *
+ * Motion noise. Besides the white noise of "noise", a MEMS sensor in
+ * motion errs in proportion to what it measures: scale-factor and
+ * cross-axis errors (a relative gyro_scale, accel_scale, about 1 % for
+ * consumer parts) and the gyro's g-sensitivity (gyro_g, rad/s per m/s^2).
+ * They change with the motion, over about corr_time seconds, so each
+ * sample's prediction takes them as white noise over that time: density^2
+ * += (gyro_scale^2 |w|^2 + gyro_g^2 |f|^2) corr_time for the gyro and
+ * accel_scale^2 |f|^2 corr_time for the accelerometer, w and f the
+ * corrected readings. The whole specific force, gravity's part too: a
+ * body that turns (a foot pitches through +-60 deg each stride) moves
+ * gravity's part between the axes, so its error is no bias. All zero:
+ * the white noise alone.
  *
  * Floor. A foot that walks on a level floor is at the same height at
  * every stance: with floor_sigma > 0 the first stationary sample of each
@@ -302,9 +319,18 @@ typedef struct {
     uint32_t time_resets, filter_errors, init_rejected;
 } se23_ins_counters_t;
 
+/** Sensor errors that grow with the motion ("Motion noise"). */
+typedef struct {
+    se23_real_t gyro_scale;  /**< gyro scale-factor and cross-axis error, relative */
+    se23_real_t accel_scale; /**< accelerometer scale-factor and cross-axis error, relative */
+    se23_real_t gyro_g;      /**< gyro g-sensitivity [rad/s per m/s^2] */
+    se23_real_t corr_time;   /**< how long they stay the same [s] (0: model off) */
+} se23_ins_motion_noise_t;
+
 /** Configuration (se23_ins_setup checks every field). */
 typedef struct {
     se23_imu_noise_t noise;     /**< IMU noise densities and bias walks */
+    se23_ins_motion_noise_t motion; /**< errors in proportion to the motion ("Motion noise") */
     se23_real_t gyro_range;     /**< sensor range |w| [rad/s] */
     se23_real_t accel_range;    /**< sensor range |f| [m/s^2] */
     se23_real_t lat;            /**< latitude of the nav-frame (NED) origin [rad] */
@@ -322,6 +348,7 @@ typedef struct {
     se23_real_t preint_window;  /**< preintegrated factor length [s] (0: none) */
     int zupt;                   /**< 1: detector and zero-velocity updates */
     se23_stationary_config_t detector; /**< window, noise, threshold (stationary.h) */
+    int gravity_test_off;       /**< 1: no mean-acceleration test at rest ("Zero-velocity updates") */
     se23_real_t zupt_sigma_v;   /**< 1-sigma of v = 0 at rest [m/s] */
     se23_real_t zaru_sigma_w;   /**< 1-sigma of w = 0 at rest [rad/s] (bias states; 0: no ZARU) */
     se23_real_t zaru_after;     /**< rest [s] before ZARU applies (0: at once) */
@@ -502,7 +529,9 @@ se23_status_t se23_ins_preset_foot(se23_real_t rate_hz, se23_real_t lat,
  *         SE23_INS_GYRO_RANGE_MAX; outage_accel above accel_range + 10
  *         m/s^2, outage_rate above gyro_range; |lat| > pi/2 +
  *         SE23_EARTH_LAT_SLACK, se23_earth_gravity's rule;
- *         bias_states, earth_rotation or zupt not 0/1); SE23_ERR_DT
+ *         bias_states, earth_rotation, zupt or gravity_test_off not 0/1;
+ *         a motion error above 1 (gyro_scale, accel_scale; gyro_g in rad/s
+ *         per m/s^2) or corr_time above 1 s); SE23_ERR_DT
  *         (dt_nominal below 1 ns, max_gap below dt_nominal or above
  *         SE23_CFG_DT_MAX); SE23_ERR_DIM (the ring cannot hold
  *         2 * delay_horizon / dt_nominal + 2 samples); the statuses of

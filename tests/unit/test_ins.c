@@ -76,6 +76,12 @@ static void m_gyro_range(se23_ins_config_t *c)
 }
 static void m_outage_accel(se23_ins_config_t *c) { c->outage_accel = (se23_real_t)160.01; }
 static void m_outage_rate(se23_ins_config_t *c) { c->outage_rate = (se23_real_t)30.01; }
+/* the motion noise (ins.h, "Motion noise") and the rest test's flag */
+static void m_motion_neg(se23_ins_config_t *c) { c->motion.gyro_scale = SE23_R(-0.01); }
+static void m_motion_nan(se23_ins_config_t *c) { c->motion.accel_scale = (se23_real_t)NAN; }
+static void m_motion_big(se23_ins_config_t *c) { c->motion.gyro_g = (se23_real_t)1.01; }
+static void m_motion_tau(se23_ins_config_t *c) { c->motion.corr_time = (se23_real_t)1.01; }
+static void m_gravity_flag(se23_ins_config_t *c) { c->gravity_test_off = 2; }
 
 /* The filter's RAM as ins.h and the README state it (a firmware's budget):
  * a fixed part plus the ring of SE23_INS_RING samples. */
@@ -84,10 +90,10 @@ static void test_ins_memory_is_as_documented(void **state)
     (void)state;
 #if SE23_CFG_DOUBLE
     assert_int_equal(sizeof(se23_ins_hist_t), 72);
-    assert_int_equal(sizeof(se23_ins_t), 17496 + SE23_INS_RING * 72);
+    assert_int_equal(sizeof(se23_ins_t), 17536 + SE23_INS_RING * 72);
 #else
     assert_int_equal(sizeof(se23_ins_hist_t), 48);
-    assert_int_equal(sizeof(se23_ins_t), 8976 + SE23_INS_RING * 48);
+    assert_int_equal(sizeof(se23_ins_t), 8992 + SE23_INS_RING * 48);
 #endif
 }
 
@@ -111,6 +117,9 @@ static void test_setup_rejects_each_bad_field_and_writes_nothing(void **state)
         {m_floor_swing, SE23_ERR_DOMAIN},
         {m_accel_range, SE23_ERR_DOMAIN},  {m_gyro_range, SE23_ERR_DOMAIN},
         {m_outage_accel, SE23_ERR_DOMAIN}, {m_outage_rate, SE23_ERR_DOMAIN},
+        {m_motion_neg, SE23_ERR_DOMAIN},   {m_motion_nan, SE23_ERR_NONFINITE},
+        {m_motion_big, SE23_ERR_DOMAIN},   {m_motion_tau, SE23_ERR_DOMAIN},
+        {m_gravity_flag, SE23_ERR_DOMAIN},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
         se23_ins_config_t c;
@@ -259,6 +268,53 @@ static void test_every_sample_ends_in_one_counter(void **state)
     assert_int_equal(se23_ins_imu(NULL, 0, 0, &w, &f), SE23_INS_FAILED);
     assert_int_equal(se23_ins_imu(&ins, 0, 0, NULL, &f), SE23_INS_FAILED);
     assert_int_equal(ins.c.imu_failed, 1); /* the NULL reading */
+}
+
+/* The motion noise (ins.h, "Motion noise") is the white noise of the
+ * density it states: a filter with it predicts the covariance of one whose
+ * densities are sqrt(n^2 + (k_g^2 |w|^2 + s_g^2 |f|^2) tau) and
+ * sqrt(n^2 + k_a^2 |f|^2 tau) of the readings, computed here in double. */
+static void test_motion_noise_is_the_density_it_states(void **state)
+{
+    (void)state;
+    static se23_ins_t plain;
+    const double w[3] = {0.5, -1.0, 2.0}, f[3] = {1.0, 2.0, -9.0};
+    const double ks_g = 0.01, ks_a = 0.02, kg_g = 1e-3, tau = 0.1;
+    const double w2 = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
+    const double f2 = f[0] * f[0] + f[1] * f[1] + f[2] * f[2];
+    se23_ins_config_t c, cp;
+    se23_gauss_t g;
+    se23_vec3_t wv, fv;
+    it_config(&c, 1);
+    c.zupt = 0;
+    cp = c;
+    c.motion.gyro_scale = (se23_real_t)ks_g;
+    c.motion.accel_scale = (se23_real_t)ks_a;
+    c.motion.gyro_g = (se23_real_t)kg_g;
+    c.motion.corr_time = (se23_real_t)tau;
+    cp.noise.gyro_noise = (se23_real_t)sqrt(IT_SG * IT_SG / IT_RATE +
+                                            (ks_g * ks_g * w2 + kg_g * kg_g * f2) * tau);
+    cp.noise.accel_noise = (se23_real_t)sqrt(IT_SA * IT_SA / IT_RATE + ks_a * ks_a * f2 * tau);
+    assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
+    assert_int_equal(se23_ins_setup(&cp, &plain), SE23_OK);
+    it_initial(15, 1e-3, 0.1, 1.0, &g);
+    assert_int_equal(se23_ins_init(&ins, 0, &g), SE23_OK);
+    assert_int_equal(se23_ins_init(&plain, 0, &g), SE23_OK);
+    for (int i = 0; i < 3; ++i) {
+        wv.v[i] = (se23_real_t)w[i];
+        fv.v[i] = (se23_real_t)f[i];
+    }
+    for (long long k = 1; k <= 3; ++k) {
+        assert_int_equal(se23_ins_imu(&ins, k * IT_DT_NS, k, &wv, &fv), SE23_INS_USED);
+        assert_int_equal(se23_ins_imu(&plain, k * IT_DT_NS, k, &wv, &fv), SE23_INS_USED);
+    }
+    for (int i = 0; i < 15 * 15; ++i) {
+        const double a = (double)ins.g.P.m[i], b = (double)plain.g.P.m[i];
+        assert_true(fabs(a - b) <= 1e3 * SE23T_EPS * (fabs(b) + 1e-12));
+    }
+    /* and it is not the white noise alone: the attitude variance grew more */
+    assert_true((double)ins.g.P.m[0] > 1.01 * (double)g.P.m[0] &&
+                (double)cp.noise.gyro_noise > 3.0 * (double)c.noise.gyro_noise);
 }
 
 /* Regression (fuzz_ins, issue 37 S6): a NaN reading with seq -1 was judged
@@ -571,6 +627,7 @@ int main(void)
         cmocka_unit_test(test_init_checks_the_state_once_and_counts_rejections),
         cmocka_unit_test(test_init_keeps_an_exactly_symmetric_covariance),
         cmocka_unit_test(test_every_sample_ends_in_one_counter),
+        cmocka_unit_test(test_motion_noise_is_the_density_it_states),
         cmocka_unit_test(test_nonfinite_reading_is_judged_before_its_time),
         cmocka_unit_test(test_every_sample_ends_in_one_counter_when_the_step_fails),
         cmocka_unit_test(test_init_refuses_means_beyond_the_physical_bounds),
