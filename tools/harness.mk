@@ -39,7 +39,7 @@ H_CORRUPT_SRCS := tools/lcm/corrupt.c tools/lcm/corrupt_framing.c tools/lcm/corr
                   tools/lcm/logfile.c $(H_COMMON)
 H_SIMCHECK_SRCS := tools/lcm/simcheck.c tools/lcm/logfile.c $(H_COMMON)
 H_IMPORT_SRCS := tools/import/main.c tools/import/csv.c tools/import/row.c \
-                 tools/import/hygiene.c $(H_COMMON)
+                 tools/import/hygiene.c tools/import/gyrocheck.c $(H_COMMON)
 H_IMPORTCHECK_SRCS := tools/import/check.c tools/lcm/logfile.c $(H_COMMON)
 H_HDRS := $(wildcard tools/lcm/*.h tools/sim/*.h tools/ins/*.h tools/report/*.h \
                      tools/import/*.h) $(LIB_HDRS)

@@ -83,38 +83,61 @@ hyg_action_t hygiene_accept(hygiene_t *h, const row_t *r, int64_t *seq)
     return HYG_WRITE;
 }
 
-/* The run restarted at a sample of |f| = m at t_ns. */
-static void rest_restart(hyg_rest_t *s, int64_t t_ns, double m)
+/* The run restarted at r, of |f| = m (no sample in it yet). */
+static void run_restart(hyg_run_t *run, const row_t *r, double m)
 {
-    s->t0_ns = t_ns;
-    s->n = 0;
-    s->sum = 0.0;
-    s->lo = m;
-    s->hi = m;
+    memset(run, 0, sizeof *run);
+    run->t0_ns = r->t_ns;
+    run->lo = m;
+    run->hi = m;
 }
 
-int hygiene_rest(hyg_rest_t *s, const row_t *r)
+static void run_add(hyg_run_t *run, const row_t *r, double m)
+{
+    int k;
+    run->n++;
+    run->sum += m;
+    run->lo = fmin(run->lo, m);
+    run->hi = fmax(run->hi, m);
+    run->t1_ns = r->t_ns;
+    for (k = 0; k < 3; k++) {
+        run->f_sum[k] += r->accel[k];
+        run->w_sum[k] += r->omega[k];
+    }
+}
+
+/* Whether |f| = m takes the run beyond HYG_REST_SPREAD (or there is none). */
+static int run_breaks(const hyg_run_t *run, double m)
+{
+    const double mean = (run->sum + m) / (double)(run->n + 1);
+    return run->n == 0 || fmax(run->hi, m) - fmin(run->lo, m) > HYG_REST_SPREAD * mean;
+}
+
+hyg_rest_event_t hygiene_rest(hyg_rest_t *s, const row_t *r)
 {
     const double m = sqrt(r->accel[0] * r->accel[0] + r->accel[1] * r->accel[1] +
                           r->accel[2] * r->accel[2]);
-    if (s->found) {
-        return 1;
+    hyg_rest_event_t ev = HYG_MOVING;
+    if (!isfinite(m) || run_breaks(&s->run, m)) { /* moving: a run can only start here */
+        if (s->resting) {
+            s->last = s->run;
+            ev = HYG_REST_ENDS;
+        }
+        s->resting = 0;
+        run_restart(&s->run, r, m);
+        if (!isfinite(m)) { /* beyond the double range (1e200 in the file): no run */
+            return ev;
+        }
     }
-    if (!isfinite(m)) { /* beyond the double range (1e200 in the file): no rest */
-        s->n = 0;
-        return 0;
+    run_add(&s->run, r, m);
+    if (s->resting) {
+        return HYG_RESTING;
     }
-    if (s->n == 0 ||
-        fmax(s->hi, m) - fmin(s->lo, m) > HYG_REST_SPREAD * (s->sum + m) / (double)(s->n + 1)) {
-        rest_restart(s, r->t_ns, m); /* moving: a rest can only start here */
+    if (s->run.n >= HYG_REST_N && hygiene_interval(s->run.t0_ns, s->run.t1_ns) >= HYG_REST_NS) {
+        s->resting = 1;
+        return HYG_REST_BEGINS;
     }
-    s->n++;
-    s->sum += m;
-    s->lo = fmin(s->lo, m);
-    s->hi = fmax(s->hi, m);
-    s->t1_ns = r->t_ns;
-    s->found = s->n >= HYG_REST_N && hygiene_interval(s->t0_ns, s->t1_ns) >= HYG_REST_NS;
-    return s->found;
+    return ev;
 }
 
 static int cmp_i64(const void *a, const void *b)

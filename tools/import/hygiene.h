@@ -10,9 +10,10 @@
  * before it, lost = round(interval / nominal) - 1 when that is >= 1 (a gap),
  * so that a downstream INS counts them as missing.
  *
- * The unit check looks for the first rest (hygiene_rest): the specific
- * force there must read about 1 g, else the file is in another unit than
- * the one given (main.c decides and says which).
+ * The unit checks look for rests (hygiene_rest): the specific force at the
+ * first must read about 1 g, else the file is in another unit than the one
+ * given (main.c decides and says which); between rests, the gyroscope must
+ * explain how the direction of gravity changed (gyrocheck.h).
  */
 #ifndef SE23_IMPORT_HYGIENE_H
 #define SE23_IMPORT_HYGIENE_H
@@ -84,20 +85,32 @@ hyg_action_t hygiene_accept(hygiene_t *h, const row_t *r, int64_t *seq);
 #define HYG_REST_N 10
 #define HYG_REST_SPREAD 0.1
 
-/** The search for the first rest, fed the rows in time order. */
+/** A run of samples over which |f| stays within HYG_REST_SPREAD of its mean. */
 typedef struct {
-    int64_t t0_ns, t1_ns; /**< the run of steady |f|: first and last time */
-    int64_t n;            /**< samples in it */
-    double sum, lo, hi;   /**< of |f| over it */
-    int found;            /**< the run is a rest (then it stops growing) */
+    int64_t t0_ns, t1_ns; /**< first and last time */
+    int64_t n;            /**< samples */
+    double sum, lo, hi;   /**< of |f| [m/s^2] */
+    double f_sum[3];      /**< of the specific force [m/s^2] */
+    double w_sum[3];      /**< of the angular rate [rad/s, as converted] */
+} hyg_run_t;
+
+/** What a row did to the search for rests. */
+typedef enum {
+    HYG_MOVING = 0,  /**< no rest */
+    HYG_REST_BEGINS, /**< the run became a rest: run holds its first HYG_REST_NS */
+    HYG_RESTING,     /**< the rest goes on: run grows */
+    HYG_REST_ENDS    /**< the row moved: last holds the rest that ended */
+} hyg_rest_event_t;
+
+/** The search for rests, fed the rows in time order (zeroed before). */
+typedef struct {
+    hyg_run_t run;  /**< the current run of steady |f| */
+    hyg_run_t last; /**< the rest that ended last */
+    int resting;    /**< run is a rest */
 } hyg_rest_t;
 
-/**
- * Adds r (after the rows before it; times increasing) to the search
- * (zeroed before the first row); 1 once the rest is found, its mean |f|
- * [m/s^2] sum / n.
- */
-int hygiene_rest(hyg_rest_t *s, const row_t *r);
+/** Adds r (after the rows before it; times increasing) to the search. */
+hyg_rest_event_t hygiene_rest(hyg_rest_t *s, const row_t *r);
 
 /** The interval b - a >= 0 from time a to b >= a [ns], saturated at
  *  INT64_MAX (no overflow whatever the times). */

@@ -10,11 +10,12 @@
  *
  * Two passes over the file unless --rate and --unit-check off are given:
  * the first reads the first RATE_PREFIX intervals between valid rows for
- * the nominal interval (their median) and looks for the first rest, where
- * the specific force must read about 1 g (the unit check: a file in m/s^2
- * read as g reads 9.8 g). The output is created at the first valid row of
- * the second pass, so an input without one, or refused by the first pass,
- * leaves no log behind.
+ * the nominal interval (their median) and, for the unit checks, the whole
+ * file: the specific force must read about 1 g at the first rest (a file
+ * in m/s^2 read as g reads 9.8 g), and the gyroscope's numbers must not be
+ * those of the other unit (gyrocheck.h). The output is created at the
+ * first valid row of the second pass, so an input without one, or refused
+ * by the first pass, leaves no log behind.
  *
  * Exit status: 0 done; 1 the input cannot be read, holds no valid row,
  * fails the unit check, has no line end within CSV_RUNAWAY_MAX bytes, or
@@ -33,6 +34,7 @@
 
 #include "../lcm/harness.h"
 #include "csv.h"
+#include "gyrocheck.h"
 #include "hygiene.h"
 #include "row.h"
 #include "se23lcm_imu_info.h"
@@ -61,7 +63,7 @@ typedef struct {
     const char *gyro_cols, *accel_cols, *axes, *accel_misalign;
     int64_t time_col, columns, max_messages;
     int time_unit, gyro_unit, accel_unit;
-    int unit_check; /* 1: the first rest must read about 1 g */
+    int unit_check; /* 1: the accelerometer's and the gyroscope's units checked */
     double g, rate, gyro_range, accel_range;
 } opts_t;
 
@@ -77,7 +79,10 @@ typedef struct {
     size_t n_dt;
     int64_t prev_t;       /* pre-pass: the last valid row's time */
     int have_prev;
-    hyg_rest_t rest;      /* pre-pass: the search for the first rest */
+    hyg_rest_t rests;     /* pre-pass: the search for rests */
+    hyg_run_t rest;       /* ... the first rest's first HYG_REST_NS ... */
+    int rest_found;       /* ... once found */
+    gyro_check_t gyro;    /* pre-pass: the gyroscope's unit check */
     int ncols;            /* fields a row must have (0: any) */
     se23lcm_imu_info info; /* the log's first message (rate_hz 0: rate unknown, none) */
 } importer_t;
@@ -96,9 +101,11 @@ static int find_time_unit(const char *v)
     return -1;
 }
 
+static const char *const gyro_units[] = {"rad/s", "deg/s"};
+
 static int find_gyro_unit(const char *v)
 {
-    return strcmp(v, "rad/s") == 0 ? 0 : strcmp(v, "deg/s") == 0 ? 1 : -1;
+    return strcmp(v, gyro_units[0]) == 0 ? 0 : strcmp(v, gyro_units[1]) == 0 ? 1 : -1;
 }
 
 static const char *const accel_units[] = {"m/s2", "g"};
@@ -150,7 +157,10 @@ static void usage(FILE *f)
             "                         interval of the first %d intervals, a first pass)\n"
             "  --max-messages N       per-row messages on stderr, then a count (10)\n"
             "  --unit-check on|off    the first rest (|f| steady within %.0f%% for %.1f s)\n"
-            "                         must read %.1f to %.1f g, else the file is refused (on)\n"
+            "                         must read %.1f to %.1f g, and the gyroscope must not\n"
+            "                         read like the other unit (beyond 4000 deg/s, or\n"
+            "                         against the tilt changes between rests), else the\n"
+            "                         file is refused (on)\n"
             "Rows repeating the last written timestamp, or earlier, are dropped; a\n"
             "longer interval than the nominal one loses round(interval/nominal - 1)\n"
             "samples and the sequence numbers skip them. Malformed rows (wrong field\n"
@@ -478,8 +488,8 @@ static int take_row(importer_t *im, const row_t *r, int64_t lineno)
 
 /*
  * Pre-pass: a valid row. On the rows in time order, collects the intervals
- * (unless --rate) and looks for the first rest (unless --unit-check off);
- * 1 once RATE_PREFIX intervals are in and the rest is found.
+ * (unless --rate) and feeds the unit checks (unless --unit-check off: then
+ * 1 once RATE_PREFIX intervals are in; they read every row).
  */
 static int take_first(importer_t *im, const row_t *r)
 {
@@ -492,9 +502,14 @@ static int take_first(importer_t *im, const row_t *r)
     im->prev_t = r->t_ns;
     im->have_prev = 1;
     if (im->o.unit_check) {
-        hygiene_rest(&im->rest, r);
+        const hyg_rest_event_t ev = hygiene_rest(&im->rests, r);
+        if (ev == HYG_REST_BEGINS && !im->rest_found) {
+            im->rest = im->rests.run;
+            im->rest_found = 1;
+        }
+        gyro_check_add(&im->gyro, r, ev, &im->rests);
     }
-    return (im->dt == NULL || im->n_dt >= RATE_PREFIX) && (!im->o.unit_check || im->rest.found);
+    return (im->dt == NULL || im->n_dt >= RATE_PREFIX) && !im->o.unit_check;
 }
 
 /*
@@ -593,7 +608,7 @@ static int scan(importer_t *im, FILE *f, int main_pass)
 
 /*
  * The first pass over f, then f is rewound: the intervals for the nominal
- * interval (unless --rate) and the first rest (unless --unit-check off);
+ * interval (unless --rate) and the unit checks (unless --unit-check off);
  * none with both options. Returns 0, or -1 after saying what failed.
  */
 static int first_pass(importer_t *im, FILE *f)
@@ -609,6 +624,7 @@ static int first_pass(importer_t *im, FILE *f)
             return -1;
         }
     }
+    gyro_check_init(&im->gyro, im->map.gyro_scale);
     rc = scan(im, f, 0);
     if (rc == 0 && fseek(f, 0, SEEK_SET) != 0) {
         fprintf(stderr, PROG ": cannot rewind %s (give --rate and --unit-check off): %s\n",
@@ -653,19 +669,16 @@ static double rest_g(const importer_t *im)
 }
 
 /*
- * The unit check on the first pass's rest: 0 if it reads REST_G_LO to
- * REST_G_HI g (or --unit-check off, or no rest found), else -1 after
- * saying which --accel-unit would. The gyroscope's unit is not checked:
- * at rest it reads about 0 in either unit, and in motion a rate 57 times
- * too small (rad/s read as deg/s, the likely slip with the x-io defaults)
- * is still the rate of some slower motion.
+ * The accelerometer's unit check on the first pass's rest: 0 if it reads
+ * REST_G_LO to REST_G_HI g (or --unit-check off, or no rest found), else
+ * -1 after saying which --accel-unit would.
  */
-static int unit_verdict(const importer_t *im)
+static int accel_verdict(const importer_t *im)
 {
     double g, raw;
     char t0[32], t1[32];
     int k, fit = -1;
-    if (!im->o.unit_check || !im->rest.found) {
+    if (!im->o.unit_check || !im->rest_found) {
         return 0;
     }
     g = rest_g(im);
@@ -691,13 +704,50 @@ static int unit_verdict(const importer_t *im)
     return -1;
 }
 
-/* The unit check's line of the summary. */
+/*
+ * The gyroscope's unit check on the first pass's evidence (gyrocheck.h): 0
+ * unless it says the file is in the other unit than --gyro-unit, else -1
+ * after saying so.
+ */
+static int gyro_verdict(const importer_t *im)
+{
+    const gyro_unit_t u = gyro_check_verdict(&im->gyro);
+    const int fit = u == GYRO_IS_RAD ? 0 : u == GYRO_IS_DEG ? 1 : -1;
+    char why[400];
+    if (!im->o.unit_check || fit < 0 || fit == im->o.gyro_unit) {
+        return 0;
+    }
+    gyro_check_describe(&im->gyro, why, sizeof why);
+    fprintf(stderr, PROG ": %s: the gyroscope's numbers are %s, not %s (%s): is the file in %s? "
+                    "use --gyro-unit %s (--unit-check off to import it as told); nothing written\n",
+            im->o.in, gyro_units[fit], gyro_units[im->o.gyro_unit], why, gyro_units[fit],
+            gyro_units[fit]);
+    return -1;
+}
+
+/* The gyroscope's unit check's line of the summary (unless off). */
+static void gyro_note(const importer_t *im)
+{
+    const gyro_unit_t u = gyro_check_verdict(&im->gyro);
+    char why[400];
+    gyro_check_describe(&im->gyro, why, sizeof why);
+    if (u == GYRO_IS_RAD || u == GYRO_IS_DEG) {
+        printf(PROG ": gyro unit check: %s confirmed (%s)\n", gyro_units[im->o.gyro_unit], why);
+    } else {
+        printf(PROG ": gyro unit check: undecided%s, the gyroscope's unit not checked (%s)\n",
+               u == GYRO_CONFLICT ? " (evidence both ways)" : "", why);
+    }
+}
+
+/* The unit checks' lines of the summary. */
 static void unit_note(const importer_t *im)
 {
     char t0[32], t1[32];
     if (!im->o.unit_check) {
         printf(PROG ": unit check off\n");
-    } else if (!im->rest.found) {
+        return;
+    }
+    if (!im->rest_found) {
         printf(PROG ": unit check: no rest (|f| steady within %.0f %% for %.1f s), the "
                     "accelerometer's unit not checked\n",
                100.0 * HYG_REST_SPREAD, HYG_REST_NS * 1e-9);
@@ -705,6 +755,7 @@ static void unit_note(const importer_t *im)
         printf(PROG ": unit check: |f| = %.3f g at rest (t = %s to %s s)\n", rest_g(im),
                fmt_s(im->rest.t0_ns, t0, sizeof t0), fmt_s(im->rest.t1_ns, t1, sizeof t1));
     }
+    gyro_note(im);
 }
 
 static void summary(const importer_t *im, double nom, const char *how)
@@ -789,7 +840,7 @@ int main(int argc, char **argv)
     }
     rc = first_pass(&im, f);
     if (rc == 0) {
-        rc = unit_verdict(&im);
+        rc = accel_verdict(&im) != 0 ? -1 : gyro_verdict(&im);
     }
     if (rc == 0) {
         nom = nominal(&im, how, sizeof how);
