@@ -314,7 +314,8 @@ i_overflow() {
     i_run overrot 0 --accel-unit m/s2 --accel-misalign 0,0,10 &&
         i_expect overrot rows=3 rows_written=2 malformed_nonfinite=1 &&
         i_msg overrot 'overrot.csv:3: column 5: not finite once converted' &&
-        i_back overrot samples=2 && ! grep -Eiq "nan|inf" "$IW/overrot.back"
+        i_back overrot samples=2 &&
+        ! grep -E "^(first|last)_" "$IW/overrot.back" | grep -Eiq "nan|inf"
 }
 check import-overflow-after-conversion i_overflow
 
@@ -402,9 +403,10 @@ check import-unit-check-at-rest i_units_check
 
 # se23-ins on a log where its filter never initialises (3 samples: too
 # short for the preset's alignment; no SE23_INIT without it): status 4 and
-# why on stderr, not 0 after aligning for ever.
+# why on stderr, not 0 after aligning for ever. (No --imu-rate: the log's
+# own, 66.7 Hz, the median of its two intervals.)
 i_ins_never() {
-    for in_opts in "--preset foot --imu-rate 400" "--imu-rate 100"; do
+    for in_opts in "--preset foot" ""; do
         # shellcheck disable=SC2086
         $IVG "$IB/se23-ins" $in_opts --in "file://$IW/over.log?speed=0" \
             --out "file://$IW/never.ins.log?mode=w" >"$IW/never.out" 2>"$IW/never.err"
@@ -416,6 +418,143 @@ i_ins_never() {
     done
 }
 check import-ins-never-initialised i_ins_never
+
+# A file without a time column (gaitmap's layout: two header lines, a
+# sample index): --time-col 0 needs --rate (status 2, saying so); with it,
+# data row k is at k / 250 Hz, the malformed row 6 too: its sample counts
+# as lost, the sequence numbers skip it. The log's first message says how
+# the samples are timed (SE23_IMU_INFO: 250 Hz, source 2, the row index).
+i_no_time_col() {
+    {
+        echo "sensor,left,left,left,left,left,left"
+        echo "index,gx,gy,gz,ax,ay,az"
+        for k in 0 1 2 3 4 5 7 8 9; do
+            [ "$k" = 7 ] && echo "6,1,2,x,0,0,1"
+            echo "$k,1,2,3,0,0,1"
+        done
+    } >"$IW/notime.csv"
+    i_run notime 2 --header 2 --time-col 0 &&
+        i_msg notime "--time-col 0 (no time column) needs --rate HZ: row k is at k / HZ" &&
+        [ ! -e "$IW/notime.log" ] || return 1
+    i_run notime 0 --header 2 --time-col 0 --rate 250 &&
+        i_expect notime rows=10 rows_written=9 malformed=1 malformed_number=1 gaps=1 \
+            lost_samples=1 last_seq=10 nominal_interval_s=0.004000000 &&
+        grep -q "(250.000 Hz; row index, --rate 250 Hz)" "$IW/notime.out" &&
+        i_back notime samples=9 seq_missing=1 first_t_ns=0 last_t_ns=36000000 info_events=1 \
+            info_late=0 info_rate_hz=250 info_rate_source=2 info_n_intervals=0 other_events=0
+}
+check import-no-time-column i_no_time_col
+
+# The rate travels with the log (tools/ins/main.c, RATE_TOLERANCE): 3 s at
+# rest at 250 Hz, imported with --time-col 0 --rate 250, through se23-ins
+# --preset foot: without --imu-rate the filter runs at the log's 250 Hz;
+# --imu-rate 252 (0.8 % off) is taken; 255 and 247 (2 % and 1.2 % off) are
+# refused, status 5, both rates named. A log without SE23_IMU_INFO (the
+# simulator's) keeps the default 200 Hz.
+# i_ins NAME WANT_RC [OPTIONS...]: se23-ins --preset foot on NAME.log under
+# valgrind, the summary in NAME.ins.txt, the messages in NAME.ins.err.
+i_ins() {
+    in_name=$1
+    in_rc=$2
+    shift 2
+    $IVG "$IB/se23-ins" --preset foot "$@" --in "file://$IW/$in_name.log?speed=0" \
+        --out "file://$IW/$in_name.ins.log?mode=w" >"$IW/$in_name.ins.txt" \
+        2>"$IW/$in_name.ins.err"
+    in_got=$?
+    cat "$IW/$in_name.ins.err"
+    echo "se23-ins $*: exit status $in_got (expected $in_rc)"
+    [ "$in_got" -eq "$in_rc" ]
+}
+# i_ins_rate NAME HZ FROM LOG_HZ: NAME.ins.txt says the filter ran at HZ,
+# from FROM, and the log said LOG_HZ.
+i_ins_rate() {
+    awk -v hz="$2" -v from="$3" -v log_hz="$4" '
+        $1 == "imu_rate_hz" { r = $2 } $1 == "imu_rate_from" { f = $2 }
+        $1 == "log_imu_rate_hz" { l = $2 }
+        END { printf "imu_rate_hz %s from %s, log %s\n", r, f, l
+              exit !(r == hz && f == from && l == log_hz) }' "$IW/$1.ins.txt"
+}
+i_ins_log_rate() {
+    awk 'BEGIN {
+        print "index,gx,gy,gz,ax,ay,az"
+        for (i = 0; i < 750; i++) printf "%d,0.01,-0.02,0.01,0,0,%.3f\n", i, 1 + (i % 2 - 0.5) / 500
+    }' >"$IW/rest250.csv"
+    i_run rest250 0 --time-col 0 --rate 250 &&
+        i_ins rest250 0 && i_ins_rate rest250 250.000 SE23_IMU_INFO 250.000 &&
+        i_ins rest250 0 --imu-rate 252 && i_ins_rate rest250 252.000 --imu-rate 250.000 || return 1
+    for ir_hz in 255 247; do
+        i_ins rest250 5 --imu-rate $ir_hz &&
+            grep -q "se23-ins: --imu-rate $ir_hz Hz contradicts the log's 250 Hz (SE23_IMU_INFO" \
+                "$IW/rest250.ins.err" || return 1
+    done
+    "$IB/se23-sim" --scenario static --duration 1 --gnss-rate 0 --url "file://$IW/sim.log?mode=w" &&
+        i_ins sim 0 && i_ins_rate sim 200.000 default 0.000
+}
+check import-ins-takes-the-logs-rate i_ins_log_rate
+
+# The gyroscope's unit (tools/import/gyrocheck.h). i_tilt NAME SCALE:
+# NAME.csv at 100 Hz, a body at rest for 1 s, then tilted about x by 30
+# degrees in 0.5 s (1.05 rad/s; pushed up at 1.5 g meanwhile: no rest) and
+# back, 12 times; the gyroscope's numbers are rad/s times SCALE, the
+# accelerometer's g. A rate 57.3 times too small (rad/s read as deg/s)
+# turns the body by 0.5 degrees where the accelerometer shows 30 between
+# rests: refused, "use --gyro-unit rad/s". One 57.3 times too large (deg/s
+# read as rad/s) turns it by 30 rad (1,719 degrees) and misses every rest's
+# tilt by far: refused, "use --gyro-unit deg/s". Read right, each passes,
+# confirmed; with --unit-check off the wrong reading is imported as told.
+i_tilt() {
+    awk -v s="$2" 'BEGIN {
+        pi = atan2(0, -1); print "t,gx,gy,gz,ax,ay,az"
+        for (turn = 0; turn <= 12; turn++) {
+            for (i = 0; i < 100; i++) row(0, 1)
+            if (turn == 12) break
+            step = (turn % 2 ? -pi : pi) / 6 / 50
+            for (i = 0; i < 50; i++) { phi += step; row(step / 0.01, 1.5) }
+        }
+    }
+    function row(w, push) {
+        t = n / 100; n++
+        printf "%.2f,%.17g,0,0,0,%.17g,%.17g\n", t, w * s, -push * sin(phi), -push * cos(phi)
+    }' >"$IW/$1.csv"
+}
+i_gyro_tilt() {
+    i_tilt tilt-rad 1 && i_tilt tilt-deg 57.29577951308232 || return 1
+    i_run tilt-rad 1 && [ ! -e "$IW/tilt-rad.log" ] &&
+        i_msg tilt-rad "tilt-rad.csv: the gyroscope's numbers are rad/s, not deg/s (.*12 rest" &&
+        i_msg tilt-rad "is the file in rad/s? use --gyro-unit rad/s" &&
+        i_run tilt-rad 0 --gyro-unit rad/s &&
+        grep -q "gyro unit check: rad/s confirmed" "$IW/tilt-rad.out" || return 1
+    i_run tilt-deg 1 --gyro-unit rad/s && [ ! -e "$IW/tilt-deg.log" ] &&
+        i_msg tilt-deg "numbers are deg/s, not rad/s (.* 12 followed within 10 deg as deg/s and" &&
+        i_msg tilt-deg "is the file in deg/s? use --gyro-unit deg/s" &&
+        i_run tilt-deg 0 && grep -q "gyro unit check: deg/s confirmed" "$IW/tilt-deg.out" &&
+        i_run tilt-rad 0 --unit-check off && grep -q "unit check off" "$IW/tilt-rad.out"
+}
+check import-gyro-unit-between-rests i_gyro_tilt
+
+# Beyond every MEMS gyroscope's range: i_spin NAME N: 0.5 s at rest, then
+# N samples turning about the vertical at 600 deg/s (a foot's swing; no
+# tilt change), then rest. Read as rad/s, 600 is 8.6 times 4,000 deg/s:
+# refused for N = 30; N = 9 (below GYRO_OVER_MIN: a glitch) decides
+# nothing and passes undecided.
+i_spin() {
+    awk -v n="$2" 'BEGIN {
+        print "t,gx,gy,gz,ax,ay,az"
+        for (i = 0; i < 100 + n; i++) {
+            w = i >= 50 && i < 50 + n ? 600 : 0
+            printf "%.2f,0,0,%d,0,0,1\n", i / 100, w
+        }
+    }' >"$IW/$1.csv"
+}
+i_gyro_range() {
+    i_spin spin 30 && i_spin glitch 9 &&
+        i_run spin 1 --gyro-unit rad/s && [ ! -e "$IW/spin.log" ] &&
+        i_msg spin "numbers are deg/s, not rad/s (30 samples beyond 4000 deg/s if rad/s" &&
+        i_run spin 0 && grep -q "gyro unit check: deg/s confirmed" "$IW/spin.out" &&
+        i_run glitch 0 --gyro-unit rad/s &&
+        grep -q "gyro unit check: undecided, .*(9 samples beyond 4000 deg/s" "$IW/glitch.out"
+}
+check import-gyro-unit-beyond-mems-range i_gyro_range
 
 # The real walk, with the defaults: the counts of its README.
 I_WALK_COUNTS="rows=16539 rows_written=16334 dup_time=205 dup_time_same=205 backwards=0
@@ -434,7 +573,8 @@ check import-walk i_walk
 # deg/s * pi/180, g * 9.80665 (relative error below 1e-15).
 i_walk_roundtrip() {
     i_back walk samples=16334 decode_errors=0 other_events=0 seq_missing=244 seq_bad=0 \
-        time_bad=0 first_seq=1 first_t_ns=0 last_seq=16578 last_t_ns=41618029590 || return 1
+        time_bad=0 first_seq=1 first_t_ns=0 last_seq=16578 last_t_ns=41618029590 \
+        info_events=1 info_late=0 info_rate_source=0 info_n_intervals=10000 || return 1
     awk -F, 'NR == 2 {
         pi = atan2(0, -1)
         printf "%.17g %.17g %.17g %.17g %.17g %.17g\n", $2 * pi / 180, $3 * pi / 180,
