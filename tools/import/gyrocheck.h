@@ -14,18 +14,19 @@
  *    deg/s numbers (below 60) stay in range either way; the next test is
  *    the one that sees it.
  *  - Rest to rest: between two rests (hygiene_rest) the gyroscope, less
- *    its mean over the recording's first rest (its bias), must turn the direction of
- *    gravity the accelerometer read at the first rest into the one it reads
- *    at the second. Read right, it does so within GYRO_FIT_DEG in most
- *    segments: the error is the bias drift, the scale error and a "rest"
- *    that is a steady acceleration (|f| steady within 10 % allows a car
- *    braking at 0.3 g: 17 degrees); the worst seen in the corpus of real
- *    recordings (../shared/data) is 30 degrees. A rate 57.3 times too large
- *    integrates to an arbitrary attitude, GYRO_MISS_DEG or more off in 85 %
- *    of the cases (a random direction is within 45 degrees of a given one
- *    with probability (1 - cos 45 deg) / 2 = 15 %). A segment that the deg/s
- *    reading follows within GYRO_FIT_DEG and the rad/s reading misses by
- *    GYRO_MISS_DEG counts for deg/s; GYRO_VOTES_MIN of them decide.
+ *    its mean over the recording's first rest (its bias), must turn the
+ *    direction of gravity the accelerometer reads at the one rest into the
+ *    one it reads at the next. Read right, it does so within GYRO_FIT_DEG
+ *    in most segments: the error is the bias drift, the scale error and a
+ *    "rest" that is a steady acceleration (|f| steady within 10 % allows a
+ *    car braking at 0.3 g: 17 degrees); the worst seen in the corpus of
+ *    real recordings (../shared/data) is 30 degrees. A rate 57.3 times too
+ *    large integrates to an arbitrary attitude, GYRO_MISS_DEG or more off
+ *    in 85 % of the cases (a random direction is within 45 degrees of a
+ *    given one with probability (1 - cos 45 deg) / 2 = 15 %). A segment
+ *    that the deg/s reading follows within GYRO_FIT_DEG and the rad/s
+ *    reading misses by GYRO_MISS_DEG counts for deg/s; GYRO_VOTES_MIN of
+ *    them decide.
  * Evidence that the numbers are rad/s (so deg/s is 57.3 times too small):
  *  - Rest to rest, the other way: a gyroscope 57.3 times too small turns
  *    nothing, so it cannot explain a change of the direction of gravity
@@ -36,12 +37,14 @@
  *    about 57 when the numbers are rad/s. It decides for rad/s when it is
  *    at least GYRO_GAIN_MIN (7.6, the geometric mean of 1 and 57.3) and
  *    above 1 by 3 standard errors, over GYRO_SEGMENTS_MIN segments or more
- *    (a car stops and tilts on slopes and kerbs every few minutes; a walk
- *    on a flat floor changes no tilt and stays undecided this way).
+ *    (a car's rests, stops and stretches of steady driving, come every few
+ *    seconds on roads of changing grade and camber; a walk on a flat floor
+ *    changes no tilt and stays undecided this way).
  * No evidence either way, or evidence both ways: undecided, the file passes.
- * Only the first reading can fail by accident: a rate too small explains
- * "no tilt change" as well as the right one, so it is never chosen for
- * fitting one, only for failing to explain one.
+ * The two readings are not weighed alike: a rate too small predicts "no
+ * tilt change", which a walk on a flat floor shows anyway, so fitting the
+ * rests better proves nothing for it; it loses only by failing to explain
+ * a tilt change.
  */
 #ifndef SE23_IMPORT_GYROCHECK_H
 #define SE23_IMPORT_GYROCHECK_H
