@@ -18,7 +18,7 @@
  * by the first pass, leaves no log behind.
  *
  * Exit status: 0 done; 1 the input cannot be read, holds no valid row,
- * fails the unit check, has no line end within CSV_RUNAWAY_MAX bytes, or
+ * fails a unit check, has no line end within CSV_RUNAWAY_MAX bytes, or
  * the output cannot be written; 2 bad usage (also: --out is the input).
  * Run with --help.
  */
