@@ -13,9 +13,21 @@
 
 /* Gravity's bound [m/s^2] (WGS-84 normal gravity is at most 9.84 on the
  * surface, less above it): a body whose specific force f the sensor
- * measures (|f| <= accel_range) accelerates at |f + g| <= accel_range +
- * 10, so no 1-sigma of its unknown acceleration (outage_accel) is larger. */
+ * measures (each axis within accel_range) accelerates at |f_i + g_i| <=
+ * accel_range + 10 on each axis, so no 1-sigma of its unknown
+ * acceleration (outage_accel, per axis) is larger. */
 #define GRAVITY_BOUND SE23_R(10)
+
+/* 1 if every axis of x is within +-range: a data sheet states a range per
+ * axis, and a reading within it on every axis (up to sqrt(3) range long) is
+ * a reading the sensor made. */
+static int axes_within(const se23_vec3_t *x, se23_real_t range)
+{
+    return ((se23_fabs(x->v[0]) <= range) && (se23_fabs(x->v[1]) <= range) &&
+            (se23_fabs(x->v[2]) <= range))
+               ? 1
+               : 0;
+}
 
 void se23_ins_count(uint32_t *c)
 {
@@ -439,8 +451,8 @@ se23_ins_verdict_t se23_ins_imu(se23_ins_t *ins, int64_t t_ns, int64_t seq,
     s.w_ib_b = *w_b;
     s.f_b = *f_b;
     s.dt = SE23_R(0);
-    if ((se23_v3_dot(w_b, w_b) > ins->cfg.gyro_range * ins->cfg.gyro_range) ||
-        (se23_v3_dot(f_b, f_b) > ins->cfg.accel_range * ins->cfg.accel_range)) {
+    if ((axes_within(w_b, ins->cfg.gyro_range) == 0) ||
+        (axes_within(f_b, ins->cfg.accel_range) == 0)) {
         se23_ins_count(&ins->c.imu_range);
         return SE23_INS_RANGE;
     }

@@ -46,11 +46,21 @@ se23_status_t se23_ins_preset_foot(se23_real_t rate_hz, se23_real_t lat,
      * gyro 0.007 deg/s/sqrt(Hz), accelerometer 180 ug/sqrt(Hz), in-run
      * bias walks of a few deg/h and mg over a minute, range 2000 deg/s
      * and 16 g. Flat Earth: the Earth rate (0.004 deg/s) is below the
-     * gyro's noise over a walk. */
+     * gyro's noise over a walk. In motion the same class errs by about
+     * 1 % of what it measures (sensitivity tolerance and cross-axis
+     * sensitivity, each about 1 %, of a swing's 5-10 rad/s and 2-10 g)
+     * and its gyro by 0.1 deg/s per g of acceleration (g-sensitivity);
+     * a stride's rates and accelerations keep their sign for about a
+     * quarter of a 0.4 s swing: corr_time 0.1 s (ins.h, "Motion
+     * noise"). */
     c.noise.gyro_noise = SE23_R(0.007) * DEG;
     c.noise.accel_noise = SE23_R(180e-6) * SE23_R(9.80665);
     c.noise.gyro_walk = SE23_R(1e-5);
     c.noise.accel_walk = SE23_R(1e-4);
+    c.motion.gyro_scale = SE23_R(0.01);
+    c.motion.accel_scale = SE23_R(0.01);
+    c.motion.gyro_g = (SE23_R(0.1) * DEG) / SE23_R(9.80665);
+    c.motion.corr_time = SE23_R(0.1);
     c.gyro_range = SE23_R(2000) * DEG;
     c.accel_range = SE23_R(16) * SE23_R(9.80665);
     c.lat = lat;
@@ -85,42 +95,50 @@ se23_status_t se23_ins_preset_foot(se23_real_t rate_hz, se23_real_t lat,
     c.detector.sigma_g = SE23_R(10) * DEG;
     c.detector.gravity = g;
     c.detector.threshold = se23_ins_detector_threshold(c.detector.window, Z_099);
+    c.gravity_test_off = 1; /* a foot has no smooth start (ins.h) */
     /* v = 0 to 2 cm/s: a foot turning at 10 deg/s about a contact point
      * ~0.1 m from the sensor. That residual motion changes over tens of
      * ms, so it is the same in every sample of a detector window (on the
      * x-io walk the ZUPT innovations' autocorrelation at one window's lag
      * is 0.99): the W updates of a window are one measurement of 2 cm/s,
      * not W, and each sample's update gets 2 cm/s x sqrt(W) (W updates of
-     * variance W s^2 carry the information of one of s^2). ZARU at the
-     * gyro's noise, once the foot has rested 0.5 s (7x the longest
-     * stance): in a stance it still turns. */
+     * variance W s^2 carry the information of one of s^2). */
     c.zupt_sigma_v = SE23_R(0.02) * se23_sqrt((se23_real_t)c.detector.window);
-    c.zaru_sigma_w = c.noise.gyro_noise * se23_sqrt(rate_hz);
+    /* ZARU once the foot has rested 0.5 s (7x the longest stance: in a
+     * stance it still turns). A foot under a standing person still turns
+     * with the body's postural sway, about 1 deg/s, which changes over
+     * about a second: the rate*1 s updates of a second are one measurement
+     * of 1 deg/s, each sample's gets 1 deg/s x sqrt(rate * 1 s). */
+    c.zaru_sigma_w = DEG * se23_sqrt(rate_hz);
     c.zaru_after = SE23_R(0.5);
-    /* The floor (ins.h, "Floor"): a walk on level floors, so each stance's
-     * first stationary sample is at the height of the level it is on. The
-     * sensor's height there varies with the floor's flatness (indoor floors
-     * are within about +-1 cm over a room, DIN 18202 / ACI 117 tolerances:
-     * a sigma of about 0.4 cm) and with the foot's pose when the detector
-     * first calls it still (a few degrees of pitch about a contact point
-     * ~0.1 m away: 0.5 cm): 0.65 cm in quadrature, floor_sigma 1 cm. A new
-     * level is a stance more than half the lowest stair riser or kerb
-     * (10 cm) off the level: 5 cm. Two stances are at least 0.2 s of motion
-     * apart (a swing lasts 0.3-0.5 s even running); less is the detector's
-     * flicker in one. */
-    c.floor_sigma = SE23_R(0.01);
+    /* The floor (ins.h, "Floor") is off: on a recording that loses its
+     * stances (a run, a stumble) the drift of a swing passes for a new
+     * level. A caller who knows the walk stays on level floors may set
+     * floor_sigma (the values below: indoor floors are flat within about
+     * +-1 cm over a room, DIN 18202 / ACI 117 tolerances, a sigma of 0.4
+     * cm, and the foot's pose when the detector first calls it still
+     * varies by a few degrees of pitch about a contact point ~0.1 m away,
+     * 0.5 cm: 0.65 cm in quadrature, floor_sigma 1 cm). A new level is a
+     * stance more than half the lowest stair riser or kerb (10 cm) off the
+     * level: 5 cm. Two stances are at least 0.2 s of motion apart (a swing
+     * lasts 0.3-0.5 s even running); less is the detector's flicker in
+     * one. */
+    c.floor_sigma = SE23_R(0);
     c.floor_step = SE23_R(0.05);
     c.floor_swing = SE23_R(0.2);
-    /* Alignment: the first second at rest; the start defines the frame
-     * (position 0, heading 0: no magnetometer, no GNSS). Turn-on biases
-     * of the class: 1 deg/s, 5 mg. */
+    /* Alignment: the first half second at rest (a walker may stand for
+     * less than a second before the first step; half a second of the
+     * class's noise levels the frame to 0.3 mrad and finds the gyro bias
+     * to 0.01 deg/s); the start defines the frame (position 0, heading 0:
+     * no magnetometer, no GNSS). Turn-on biases of the class: 1 deg/s, 5
+     * mg. */
     a.sigma_p = SE23_R(1e-3);
     a.yaw = SE23_R(0);
     a.sigma_yaw = SE23_R(1e-3);
     a.sigma_v = SE23_R(0.01);
     a.sigma_bg = DEG;
     a.sigma_ba = SE23_R(5e-3) * SE23_R(9.80665);
-    a.duration = SE23_R(1);
+    a.duration = SE23_R(0.5);
     *cfg = c;
     *align = a;
     return SE23_OK;

@@ -9,6 +9,8 @@
 #   make soak        10^7 filter steps per precision, aided and unaided (se23-soak)
 #   make demo-walk   a real foot-mounted walk (CSV) through the library's filter:
 #                    loop-closure error, distance, stance phases, plots
+#   make walk CSV=path [IMPORT="..."] [LAT=deg]  the same for any recording
+#   make walk-corpus DIR=folder  every recording of a folder, one table
 #   make walk-misalign  the walk's closure against a misalignment of the
 #                    accelerometer's triad (MISALIGN="rx,ry,rz ..." degrees)
 #   make walk-sim    the walk's simulated twin (se23-sim --scenario walk) with
@@ -46,7 +48,7 @@ H_HDRS := $(wildcard tools/lcm/*.h tools/sim/*.h tools/ins/*.h tools/report/*.h 
 H_LIB := $(BUILD)/lib-host-double/libse23.a
 h_objs = $(patsubst %.c,$(H)/obj/%.o,$(1))
 
-.PHONY: harness demo demo-live demo-walk walk-misalign walk-sim bench-ins soak
+.PHONY: harness demo demo-live demo-walk walk walk-corpus walk-misalign walk-sim bench-ins soak
 
 harness: $(H_BIN)/se23-sim $(H_BIN)/se23-ins $(H_BIN)/se23-report $(H_BIN)/se23-corrupt \
          $(H_BIN)/se23-simcheck $(H_BIN)/se23-walk $(H_BIN)/se23-ins-float \
@@ -127,10 +129,26 @@ demo-walk:
 	@$(MAKE) -s --no-print-directory harness BUILD=$(BUILD)
 	@sh tools/walk/demo-walk.sh $(H)
 
+# make walk CSV=path [IMPORT="se23-import options"] [LAT=deg]: any
+# foot-mounted recording through the pedestrian filter (tools/walk/walk.sh).
+walk:
+	@test -n "$(CSV)" || { echo "make walk: give CSV=path (and IMPORT=\"se23-import options\")" >&2; exit 2; }
+	@sh tools/install-deps.sh $(BUILD)
+	@$(MAKE) -s --no-print-directory harness BUILD=$(BUILD)
+	@IMPORT="$(IMPORT)" LAT="$(LAT)" sh tools/walk/walk.sh $(H) $(H)/walk-$(notdir $(basename $(CSV))) "$(CSV)"
+
+# make walk-corpus DIR=folder: every recording of the folder through the
+# pedestrian filter, one table (tools/walk/corpus.py).
+walk-corpus:
+	@test -n "$(DIR)" || { echo "make walk-corpus: give DIR=folder of recordings" >&2; exit 2; }
+	@sh tools/install-deps.sh $(BUILD)
+	@$(MAKE) -s --no-print-directory harness BUILD=$(BUILD)
+	@/usr/bin/python3 tools/walk/corpus.py --bin $(H_BIN) --run $(H)/walk-corpus $(DIR)
+
 walk-misalign:
 	@sh tools/install-deps.sh $(BUILD)
 	@$(MAKE) -s --no-print-directory harness BUILD=$(BUILD)
-	@INS_OPTS="$(or $(INS_OPTS),--floor-sigma 0)" sh tools/walk/misalign-sweep.sh $(H) $(MISALIGN)
+	@INS_OPTS="$(INS_OPTS)" sh tools/walk/misalign-sweep.sh $(H) $(MISALIGN)
 
 walk-sim:
 	@sh tools/install-deps.sh $(BUILD)

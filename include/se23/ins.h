@@ -25,7 +25,7 @@
  *   no state yet (not initialised)            -> imu_early
  *   NaN/Inf in a reading                      -> imu_nonfinite
  *   t < 0 or seq < 0                          -> imu_bad_time
- *   |w| or |f| beyond the configured range    -> imu_range
+ *   an axis of w or f beyond the range        -> imu_range
  *   t <= t_last and seq == last               -> imu_duplicate
  *   t <= t_last and seq <  last               -> imu_out_of_order
  *   t <= t_last otherwise                     -> imu_bad_time (see "Clock")
@@ -331,8 +331,8 @@ typedef struct {
 typedef struct {
     se23_imu_noise_t noise;     /**< IMU noise densities and bias walks */
     se23_ins_motion_noise_t motion; /**< errors in proportion to the motion ("Motion noise") */
-    se23_real_t gyro_range;     /**< sensor range |w| [rad/s] */
-    se23_real_t accel_range;    /**< sensor range |f| [m/s^2] */
+    se23_real_t gyro_range;     /**< sensor range per axis, |w_i| [rad/s] */
+    se23_real_t accel_range;    /**< sensor range per axis, |f_i| [m/s^2] */
     se23_real_t lat;            /**< latitude of the nav-frame (NED) origin [rad] */
     int earth_rotation;         /**< 1: rotating Earth, 0: flat */
     int bias_states;            /**< 1: 15 states, 0: 9 (biases fixed) */

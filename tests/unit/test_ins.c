@@ -317,6 +317,33 @@ static void test_motion_noise_is_the_density_it_states(void **state)
                 (double)cp.noise.gyro_noise > 3.0 * (double)c.noise.gyro_noise);
 }
 
+/* Issue 34: the range is per axis, as data sheets state it. A heel strike
+ * of 12 g on each of two axes (17 g long) is within a 16 g range and is
+ * used; 16.1 g on one axis is beyond it. */
+static void test_range_is_per_axis(void **state)
+{
+    (void)state;
+    se23_ins_config_t c;
+    se23_gauss_t g;
+    se23_vec3_t w = {{SE23_R(0), SE23_R(0), SE23_R(0)}};
+    se23_vec3_t f = {{(se23_real_t)(12 * IT_G), (se23_real_t)(-12 * IT_G), SE23_R(0)}};
+    it_config(&c, 1);
+    c.accel_range = (se23_real_t)(16 * IT_G);
+    c.outage_accel = SE23_R(1);
+    assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
+    it_initial(15, 1e-3, 0.1, 1.0, &g);
+    assert_int_equal(se23_ins_init(&ins, 0, &g), SE23_OK);
+    assert_int_equal(se23_ins_imu(&ins, IT_DT_NS, 1, &w, &f), SE23_INS_USED);
+    f.v[0] = (se23_real_t)(16.1 * IT_G);
+    f.v[1] = SE23_R(0);
+    assert_int_equal(se23_ins_imu(&ins, 2 * IT_DT_NS, 2, &w, &f), SE23_INS_RANGE);
+    w.v[2] = (se23_real_t)-30.01; /* the gyro's 30 rad/s, one axis beyond */
+    f.v[0] = SE23_R(0);
+    assert_int_equal(se23_ins_imu(&ins, 2 * IT_DT_NS, 2, &w, &f), SE23_INS_RANGE);
+    assert_int_equal(ins.c.imu_range, 2);
+    assert_int_equal(ins.c.imu_used, 1);
+}
+
 /* Regression (fuzz_ins, issue 37 S6): a NaN reading with seq -1 was judged
  * SE23_INS_BAD_TIME; ins.h screens NaN/Inf before the time. */
 static void test_nonfinite_reading_is_judged_before_its_time(void **state)
@@ -628,6 +655,7 @@ int main(void)
         cmocka_unit_test(test_init_keeps_an_exactly_symmetric_covariance),
         cmocka_unit_test(test_every_sample_ends_in_one_counter),
         cmocka_unit_test(test_motion_noise_is_the_density_it_states),
+        cmocka_unit_test(test_range_is_per_axis),
         cmocka_unit_test(test_nonfinite_reading_is_judged_before_its_time),
         cmocka_unit_test(test_every_sample_ends_in_one_counter_when_the_step_fails),
         cmocka_unit_test(test_init_refuses_means_beyond_the_physical_bounds),

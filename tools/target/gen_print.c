@@ -24,6 +24,8 @@ void gen_print_config(const se23_ins_config_t *c)
     printf("  .cfg = {\n");
     printf("   .noise = {%.17g, %.17g, %.17g, %.17g},\n", n->gyro_noise, n->accel_noise,
            n->gyro_walk, n->accel_walk);
+    printf("   .motion = {%.17g, %.17g, %.17g, %.17g},\n", c->motion.gyro_scale,
+           c->motion.accel_scale, c->motion.gyro_g, c->motion.corr_time);
     printf("   .gyro_range = %.17g, .accel_range = %.17g, .lat = %.17g,\n", c->gyro_range,
            c->accel_range, c->lat);
     printf("   .earth_rotation = %d, .bias_states = %d, .dt_nominal = %.17g, .max_gap = %.17g,\n",
@@ -34,8 +36,8 @@ void gen_print_config(const se23_ins_config_t *c)
     printf("\n   .gnss_gate = %.17g, .gate_recover = %d, .delay_horizon = %.17g,\n", c->gnss_gate,
            c->gate_recover, c->delay_horizon);
     printf("   .preint_window = %.17g, .zupt = %d,\n", c->preint_window, c->zupt);
-    printf("   .detector = {%d, %.17g, %.17g, %.17g, %.17g},\n", d->window, d->sigma_a,
-           d->sigma_g, d->gravity, d->threshold);
+    printf("   .detector = {%d, %.17g, %.17g, %.17g, %.17g}, .gravity_test_off = %d,\n",
+           d->window, d->sigma_a, d->sigma_g, d->gravity, d->threshold, c->gravity_test_off);
     printf("   .zupt_sigma_v = %.17g, .zaru_sigma_w = %.17g, .zaru_after = %.17g,\n",
            c->zupt_sigma_v, c->zaru_sigma_w, c->zaru_after);
     printf("   .floor_sigma = %.17g, .floor_step = %.17g, .floor_swing = %.17g},\n",

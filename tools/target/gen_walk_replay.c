@@ -289,7 +289,8 @@ static void hook(void *ctx, const se23_ins_t *ins, int k, int what, int verdict)
     } else if ((nv = walk_nis(ins, &g->prev, &imu[k], verdict)) >= 0.0) {
         /* a live sample with a full window: both rest tests (the second
          * one the filter evaluates only if the first passes) */
-        const double n = nv / INSR_ACCEL_TEST_Q;
+        /* without the mean-acceleration test (gravity_test_off) it always passes */
+        const double n = ins->cfg.gravity_test_off != 0 ? 0.0 : nv / INSR_ACCEL_TEST_Q;
         const int shoe = d->stationary != 0;
         nis[k] = nv;
         if (flag != (shoe && n < 1.0)) {

@@ -10,8 +10,9 @@
  *    flag may flicker within one stance);
  *  - the first stance position is the state at alignment (the first nav
  *    state), the last stance position the state at the start of the last
- *    stance phase: a 15-state filter keeps moving the position during a
- *    long rest, so the closure is read when the foot comes down;
+ *    stance phase (the closure is read when the foot comes down), and
+ *    also at the last state (a rest must hold the position: the two
+ *    differ by what the filter let the foot wander at rest);
  *  - closure error = |p_last - p_first| (3D), and its horizontal and
  *    vertical parts;
  *  - distance walked = the path length through the stance positions;
@@ -113,6 +114,23 @@ static void write_csv(const char *path, const log_data_t *d)
     fclose(f);
 }
 
+/* The closure from state `first` to state k: e = p_k - p_first, its
+ * horizontal and vertical lengths, the filter's covariance C of p_k in
+ * the nav frame and the normalised error e^T C^-1 e (the start defines the
+ * frame: its 1 mm^2 and its correlation with p_k are left out). */
+static void closure(const log_data_t *d, size_t first, size_t k, double e[3], double *h,
+                    double *v, double C[3][3], double *nis)
+{
+    int i;
+    for (i = 0; i < 3; i++) {
+        e[i] = d->nav[k].p_n[i] - d->nav[first].p_n[i];
+    }
+    *h = sqrt(e[0] * e[0] + e[1] * e[1]);
+    *v = fabs(e[2]);
+    metrics_nav_cov(d->nav[k].R_nb, d->nav[k].P, 6, C);
+    *nis = metrics_nees(&C[0][0], 3, e, 3);
+}
+
 static int plot(const walk_opts_t *o)
 {
     char cmd[4096];
@@ -181,13 +199,7 @@ int main(int argc, char **argv)
         }
         in_stance = st;
     }
-    for (k = 0; k < 3; k++) {
-        e[k] = d.nav[last_start].p_n[k] - d.nav[first].p_n[k];
-    }
-    h = sqrt(e[0] * e[0] + e[1] * e[1]);
-    v = fabs(e[2]);
-    metrics_nav_cov(d.nav[last_start].R_nb, d.nav[last_start].P, 6, C);
-    nis = metrics_nees(&C[0][0], 3, e, 3);
+    closure(&d, first, last_start, e, &h, &v, C, &nis);
     printf("se23-walk: %s\n", pos[0]);
     printf("  walk               %.1f s, %zu nav states\n",
            (double)(d.nav[d.n_nav - 1].t_ns - d.nav[first].t_ns) * 1e-9, d.n_nav - first);
@@ -202,6 +214,13 @@ int main(int argc, char **argv)
     printf("  filter's 1-sigma   %.3f m N, %.3f m E, %.3f m D there; normalised closure "
            "error %.2f (3 dof, 99 %% below 11.34)\n",
            sqrt(C[0][0]), sqrt(C[1][1]), sqrt(C[2][2]), nis);
+    {
+        double e_end[3], h_end, v_end, C_end[3][3], nis_end;
+        closure(&d, first, d.n_nav - 1, e_end, &h_end, &v_end, C_end, &nis_end);
+        printf("  at the end         %.3f m 3D, %.3f m horizontal, %.3f m vertical; normalised "
+               "error %.2f\n",
+               sqrt(h_end * h_end + v_end * v_end), h_end, v_end, nis_end);
+    }
     if (o.csv != NULL) {
         write_csv(o.csv, &d);
     }

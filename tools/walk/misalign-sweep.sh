@@ -5,8 +5,8 @@
 #
 #   [INS_OPTS=...] sh tools/walk/misalign-sweep.sh HARNESS_BUILD_DIR [RX,RY,RZ ...]
 #
-# INS_OPTS: more se23-ins options (make walk-misalign: --floor-sigma 0, the
-# filter without the floor, whose vertical drift the study explains).
+# INS_OPTS: more se23-ins options (make walk-misalign: none; --floor-sigma
+# 0.01 adds the floor, which hides the vertical drift the study explains).
 # Each rotation vector in degrees (default: +-0.5 and +-1 about each axis);
 # prints one line per vector: the 3D / horizontal / vertical closure and
 # the mean NIS of the live ZUPTs (se23-ins's zupt_nis_mean), the walk's

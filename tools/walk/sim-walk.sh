@@ -16,11 +16,11 @@
 # errors. Prints one line per vector: the 3D / horizontal / vertical
 # closure, its normalised error against the filter's covariance (3 dof)
 # and the mean NIS of the live ZUPTs; then (walk only) plots the height
-# of each stance of every run, and of the real walk (with and without the
+# of each stance of every run, and of the real walk (without and with the
 # floor) if make demo-walk has run (tools/walk/plot_twin.py; PYTHON,
 # default /usr/bin/python3 with matplotlib), into
 # HARNESS_BUILD_DIR/walk-sim/twin_heights.png. INS_OPTS:
-# more se23-ins options (e.g. --floor-sigma 0: the filter without the floor).
+# more se23-ins options (e.g. --floor-sigma 0.01: the filter with the floor).
 # SCENARIO=stairs: the same walk on a stepped path (8 strides up a 0.15 m
 # riser each, 8 down; the foot's truth at each stance is on a new level).
 set -eu
@@ -31,10 +31,10 @@ RUN="$H/walk-sim"
 VECTORS=${*:-"0,0,0 0,0.25,0 0,0.5,0 0,-0.5,0 0.5,0,0 0,0,0.5"}
 mkdir -p "$RUN"
 REAL="$H/walk/plots/walk.csv"
-REAL0="$H/walk/plots/walk-nofloor.csv"
+REAL_FLOOR="$H/walk/plots/walk-floor.csv"
 set --
 [ -f "$REAL" ] && set -- "real walk (make demo-walk)=$REAL"
-[ -f "$REAL0" ] && set -- "$@" "real walk without the floor=$REAL0"
+[ -f "$REAL_FLOOR" ] && set -- "$@" "real walk with the floor=$REAL_FLOOR"
 echo "== se23 walk-sim: the simulated ${SCENARIO:-walk} (mems at 400 Hz, seed ${SEED:-1}, double, preset foot ${INS_OPTS:-})"
 printf '%-16s %8s %8s %8s %10s %9s\n' "misalign [deg]" "3D [m]" "horiz" "vert" "norm. err" "ZUPT NIS"
 for r in $VECTORS; do
