@@ -79,7 +79,7 @@ static se23_status_t config_check(const se23_ins_config_t *cfg)
         cfg->gnss_gate, cfg->delay_horizon, cfg->preint_window, cfg->zupt_sigma_v,
         cfg->zaru_sigma_w, cfg->zaru_after, cfg->floor_sigma, cfg->floor_step,
         cfg->floor_swing, cfg->motion.gyro_scale, cfg->motion.accel_scale, cfg->motion.gyro_g,
-        cfg->motion.corr_time};
+        cfg->motion.corr_time, cfg->zupt_lever};
     const size_t n_bytes = sizeof reals;
     const int n_reals = (int)n_bytes / (int)sizeof reals[0];
     int i;
@@ -108,7 +108,8 @@ static se23_status_t config_check(const se23_ins_config_t *cfg)
     }
     /* bounds far beyond any sensor's that keep the motion noise finite */
     if ((cfg->motion.gyro_scale > SE23_R(1)) || (cfg->motion.accel_scale > SE23_R(1)) ||
-        (cfg->motion.gyro_g > SE23_R(1)) || (cfg->motion.corr_time > SE23_R(1))) {
+        (cfg->motion.gyro_g > SE23_R(1)) || (cfg->motion.corr_time > SE23_R(1)) ||
+        (cfg->zupt_lever > SE23_R(1))) {
         return SE23_ERR_DOMAIN;
     }
     if ((cfg->zupt != 0) && (cfg->zupt_sigma_v <= SE23_R(0))) {

@@ -114,10 +114,22 @@ static se23_status_t floor_update(se23_ins_t *ins, int *what)
     return update_work(ins, NULL);
 }
 
+/* The ZUPT's 1-sigma at sample s (ins.h, "Zero-velocity updates"):
+ * sqrt(zupt_sigma_v^2 + W (zupt_lever |w|)^2), w = w_meas + b_g. 8
+ * multiply-adds and a square root. */
+static se23_real_t zupt_sigma(const se23_ins_t *ins, const se23_imu_sample_t *s)
+{
+    const se23_real_t sv = ins->cfg.zupt_sigma_v, l = ins->cfg.zupt_lever;
+    se23_vec3_t w;
+    se23_v3_axpy(&s->w_ib_b, SE23_R(1), &ins->g.b_g, &w);
+    return se23_sqrt((sv * sv) +
+                     ((se23_real_t)ins->det.cfg.window * ((l * l) * se23_v3_dot(&w, &w))));
+}
+
 int se23_ins_zupt(se23_ins_t *ins, const se23_imu_sample_t *s, int rest)
 {
     const se23_vec3_t zero = {{SE23_R(0), SE23_R(0), SE23_R(0)}};
-    const se23_real_t sv = ins->cfg.zupt_sigma_v;
+    const se23_real_t sv = zupt_sigma(ins, s);
     const se23_real_t sw = ins->cfg.zaru_sigma_w;
     int zaru = 0, floor = FLOOR_NONE;
     se23_mat3_t C;

@@ -75,10 +75,12 @@ se23_status_t se23_ins_preset_foot(se23_real_t rate_hz, se23_real_t lat,
     /* The detector: a window of 12.5 ms, a quarter of the shortest stance
      * (45-70 ms), so that every stance holds windows wholly inside it. Its
      * sigmas are not the sensor noise but what a foot in stance still
-     * shows: it turns at 7-13 deg/s (sigma_g 10 deg/s) and its specific
-     * force ripples by a few percent of g (sigma_a 0.3 m/s^2); the
-     * threshold is the chi^2_{6W-2} quantile for one false "moving" window
-     * in 100 at that level of motion. */
+     * shows: it rolls from heel to toe, at 7-13 deg/s at a stroll and
+     * about twice that at a brisk walk (sigma_g 20 deg/s), and its
+     * sensor, 0.2 m from the point it rolls about, accelerates by that
+     * roll's changes (a few rad/s^2 x 0.2 m: sigma_a 0.6 m/s^2); the
+     * threshold is the chi^2_{6W-2} quantile for one false "moving"
+     * window in 100 at that level of motion. */
     c.zupt = 1;
     {
         const se23_real_t w = (SE23_R(0.0125) * rate_hz) + SE23_R(0.5);
@@ -91,19 +93,23 @@ se23_status_t se23_ins_preset_foot(se23_real_t rate_hz, se23_real_t lat,
     } else {
         /* 12.5 ms */
     }
-    c.detector.sigma_a = SE23_R(0.3);
-    c.detector.sigma_g = SE23_R(10) * DEG;
+    c.detector.sigma_a = SE23_R(0.6);
+    c.detector.sigma_g = SE23_R(20) * DEG;
     c.detector.gravity = g;
     c.detector.threshold = se23_ins_detector_threshold(c.detector.window, Z_099);
     c.gravity_test_off = 1; /* a foot has no smooth start (ins.h) */
-    /* v = 0 to 2 cm/s: a foot turning at 10 deg/s about a contact point
-     * ~0.1 m from the sensor. That residual motion changes over tens of
-     * ms, so it is the same in every sample of a detector window (on the
-     * x-io walk the ZUPT innovations' autocorrelation at one window's lag
-     * is 0.99): the W updates of a window are one measurement of 2 cm/s,
-     * not W, and each sample's update gets 2 cm/s x sqrt(W) (W updates of
-     * variance W s^2 carry the information of one of s^2). */
+    /* v = 0 to 2 cm/s, plus what the foot's roll gives: its sensor turns
+     * at w about the point the foot rolls over, the heel or the ball of
+     * the foot, about 0.2 m away (zupt_lever), and moves at up to 0.2 m x
+     * |w| (ins.h, "Zero-velocity updates"). That residual motion changes
+     * over tens of ms, so it is the same in every sample of a detector
+     * window (on the x-io walk the ZUPT innovations' autocorrelation at
+     * one window's lag is 0.99): the W updates of a window are one
+     * measurement, not W, and each sample's update gets sqrt(W) times the
+     * sigma (W updates of variance W s^2 carry the information of one of
+     * s^2). */
     c.zupt_sigma_v = SE23_R(0.02) * se23_sqrt((se23_real_t)c.detector.window);
+    c.zupt_lever = SE23_R(0.2);
     /* ZARU once the foot has rested 0.5 s (7x the longest stance: in a
      * stance it still turns). A foot under a standing person still turns
      * with the body's postural sway, about 1 deg/s, which changes over

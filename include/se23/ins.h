@@ -105,8 +105,8 @@
  * any fix within the horizon has a snapshot before it. Fusing a fix stamped
  * d seconds late costs the replay of up to d + delay_horizon seconds of
  * samples (prediction and the zero-velocity updates), in that call.
- * Memory: sizeof(se23_ins_t) = 17,536 B + SE23_INS_RING x 72 B in double,
- * 8,992 B + SE23_INS_RING x 48 B in float (26,752 / 15,136 B with the
+ * Memory: sizeof(se23_ins_t) = 17,544 B + SE23_INS_RING x 72 B in double,
+ * 9,000 B + SE23_INS_RING x 48 B in float (26,760 / 15,144 B with the
  * default ring; README "The navigation filter"; test_ins.c asserts it),
  * the kernels' work areas included (1,512 / 756 B, kept here and not on
  * the stack of the calls);
@@ -128,7 +128,10 @@
  * 100 deg/s, which SHOE's gyro term sees), and a test against the
  * filter's own attitude would keep a filter that missed one stance from
  * every later one. While the window is stationary, each
- * sample applies v = 0 (nav frame, 1-sigma zupt_sigma_v) and, with bias
+ * sample applies v = 0 (nav frame, 1-sigma sqrt(zupt_sigma_v^2 + W
+ * (zupt_lever |w|)^2), w = w_meas + b_g: a body at rest that still turns
+ * at w about a point zupt_lever away, a foot rolling over its heel or toe,
+ * moves at up to zupt_lever |w|, the same in the W samples of a window) and, with bias
  * states, once the rest has lasted zaru_after seconds, w_meas + b_g =
  * R^T Omega (the Earth rate a body at rest senses; zero on flat Earth;
  * 1-sigma zaru_sigma_w per axis, its O(|Omega| |phi|) dependence on the
@@ -350,6 +353,9 @@ typedef struct {
     se23_stationary_config_t detector; /**< window, noise, threshold (stationary.h) */
     int gravity_test_off;       /**< 1: no mean-acceleration test at rest ("Zero-velocity updates") */
     se23_real_t zupt_sigma_v;   /**< 1-sigma of v = 0 at rest [m/s] */
+    se23_real_t zupt_lever;     /**< distance [m] from the point a body at rest turns
+                                 *   about: the ZUPT's 1-sigma grows with the rate
+                                 *   ("Zero-velocity updates"; 0: constant) */
     se23_real_t zaru_sigma_w;   /**< 1-sigma of w = 0 at rest [rad/s] (bias states; 0: no ZARU) */
     se23_real_t zaru_after;     /**< rest [s] before ZARU applies (0: at once) */
     se23_real_t floor_sigma;    /**< 1-sigma of "a stance is on the floor level" [m]
@@ -531,7 +537,8 @@ se23_status_t se23_ins_preset_foot(se23_real_t rate_hz, se23_real_t lat,
  *         SE23_EARTH_LAT_SLACK, se23_earth_gravity's rule;
  *         bias_states, earth_rotation, zupt or gravity_test_off not 0/1;
  *         a motion error above 1 (gyro_scale, accel_scale; gyro_g in rad/s
- *         per m/s^2) or corr_time above 1 s); SE23_ERR_DT
+ *         per m/s^2) or corr_time above 1 s; zupt_lever above 1 m);
+ *         SE23_ERR_DT
  *         (dt_nominal below 1 ns, max_gap below dt_nominal or above
  *         SE23_CFG_DT_MAX); SE23_ERR_DIM (the ring cannot hold
  *         2 * delay_horizon / dt_nominal + 2 samples); the statuses of

@@ -164,7 +164,7 @@ void insr_flatten(const se23_ins_config_t *c, const se23_ins_align_t *a,
         a->p_n.v[0], a->p_n.v[1], a->p_n.v[2], a->sigma_p,
         a->yaw, a->sigma_yaw, a->sigma_v, a->sigma_bg, a->sigma_ba, a->duration,
         a->course_speed, a->course_sigma, c->motion.gyro_scale, c->motion.accel_scale,
-        c->motion.gyro_g, c->motion.corr_time};
+        c->motion.gyro_g, c->motion.corr_time, c->zupt_lever};
     const int ints[INSR_FLAT_INTS] = {c->earth_rotation, c->bias_states, c->gate_recover,
                                       c->zupt, c->detector.window, a->gyrocompass,
                                       c->gravity_test_off};

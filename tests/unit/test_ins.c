@@ -82,6 +82,8 @@ static void m_motion_nan(se23_ins_config_t *c) { c->motion.accel_scale = (se23_r
 static void m_motion_big(se23_ins_config_t *c) { c->motion.gyro_g = (se23_real_t)1.01; }
 static void m_motion_tau(se23_ins_config_t *c) { c->motion.corr_time = (se23_real_t)1.01; }
 static void m_gravity_flag(se23_ins_config_t *c) { c->gravity_test_off = 2; }
+static void m_lever_neg(se23_ins_config_t *c) { c->zupt_lever = SE23_R(-0.1); }
+static void m_lever_big(se23_ins_config_t *c) { c->zupt_lever = (se23_real_t)1.01; }
 
 /* The filter's RAM as ins.h and the README state it (a firmware's budget):
  * a fixed part plus the ring of SE23_INS_RING samples. */
@@ -90,10 +92,10 @@ static void test_ins_memory_is_as_documented(void **state)
     (void)state;
 #if SE23_CFG_DOUBLE
     assert_int_equal(sizeof(se23_ins_hist_t), 72);
-    assert_int_equal(sizeof(se23_ins_t), 17536 + SE23_INS_RING * 72);
+    assert_int_equal(sizeof(se23_ins_t), 17544 + SE23_INS_RING * 72);
 #else
     assert_int_equal(sizeof(se23_ins_hist_t), 48);
-    assert_int_equal(sizeof(se23_ins_t), 8992 + SE23_INS_RING * 48);
+    assert_int_equal(sizeof(se23_ins_t), 9000 + SE23_INS_RING * 48);
 #endif
 }
 
@@ -119,7 +121,8 @@ static void test_setup_rejects_each_bad_field_and_writes_nothing(void **state)
         {m_outage_accel, SE23_ERR_DOMAIN}, {m_outage_rate, SE23_ERR_DOMAIN},
         {m_motion_neg, SE23_ERR_DOMAIN},   {m_motion_nan, SE23_ERR_NONFINITE},
         {m_motion_big, SE23_ERR_DOMAIN},   {m_motion_tau, SE23_ERR_DOMAIN},
-        {m_gravity_flag, SE23_ERR_DOMAIN},
+        {m_gravity_flag, SE23_ERR_DOMAIN}, {m_lever_neg, SE23_ERR_DOMAIN},
+        {m_lever_big, SE23_ERR_DOMAIN},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
         se23_ins_config_t c;
@@ -315,6 +318,46 @@ static void test_motion_noise_is_the_density_it_states(void **state)
     /* and it is not the white noise alone: the attitude variance grew more */
     assert_true((double)ins.g.P.m[0] > 1.01 * (double)g.P.m[0] &&
                 (double)cp.noise.gyro_noise > 3.0 * (double)c.noise.gyro_noise);
+}
+
+/* The ZUPT's 1-sigma grows with the rate (ins.h, "Zero-velocity updates"):
+ * a filter with zupt_lever updates at rest as one whose zupt_sigma_v is
+ * sqrt(s^2 + W (l |w|)^2) for the sample's rate, computed here in double. */
+static void test_zupt_sigma_grows_with_the_rate(void **state)
+{
+    (void)state;
+    static se23_ins_t plain;
+    const double l = 0.2, s0 = 0.01, wz = 0.05;
+    se23_ins_config_t c, cp;
+    se23_gauss_t g;
+    se23_vec3_t w, f;
+    it_config(&c, 1);
+    c.detector.sigma_g = SE23_R(0.1); /* a turn of 0.05 rad/s is rest */
+    c.zaru_sigma_w = SE23_R(0);       /* b_g, and so w + b_g, stays */
+    cp = c;
+    c.zupt_lever = (se23_real_t)l;
+    cp.zupt_sigma_v = (se23_real_t)sqrt(s0 * s0 + c.detector.window * (l * wz) * (l * wz));
+    assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
+    assert_int_equal(se23_ins_setup(&cp, &plain), SE23_OK);
+    it_initial(15, 1e-3, 0.1, 1.0, &g);
+    assert_int_equal(se23_ins_init(&ins, 0, &g), SE23_OK);
+    assert_int_equal(se23_ins_init(&plain, 0, &g), SE23_OK);
+    it_rest_sample(NULL, NULL, NULL, NULL, &w, &f);
+    w.v[2] = (se23_real_t)wz;
+    for (long long k = 1; k <= 2 * c.detector.window; ++k) {
+        assert_int_equal(se23_ins_imu(&ins, k * IT_DT_NS, k, &w, &f), SE23_INS_USED);
+        assert_int_equal(se23_ins_imu(&plain, k * IT_DT_NS, k, &w, &f), SE23_INS_USED);
+    }
+    assert_true(ins.c.zupt_used > 0 && ins.c.zupt_used == plain.c.zupt_used);
+    /* entry (i, j) on its natural scale sqrt(P_ii P_jj): the updates take
+     * the velocity variances down by orders, the rounding with them */
+    for (int i = 0; i < 15; ++i) {
+        for (int j = 0; j < 15; ++j) {
+            const double a = (double)ins.g.P.m[15 * i + j], b = (double)plain.g.P.m[15 * i + j];
+            const double scale = sqrt((double)plain.g.P.m[16 * i] * (double)plain.g.P.m[16 * j]);
+            assert_true(fabs(a - b) <= 1e3 * SE23T_EPS * scale);
+        }
+    }
 }
 
 /* Issue 34: the range is per axis, as data sheets state it. A heel strike
@@ -656,6 +699,7 @@ int main(void)
         cmocka_unit_test(test_every_sample_ends_in_one_counter),
         cmocka_unit_test(test_motion_noise_is_the_density_it_states),
         cmocka_unit_test(test_range_is_per_axis),
+        cmocka_unit_test(test_zupt_sigma_grows_with_the_rate),
         cmocka_unit_test(test_nonfinite_reading_is_judged_before_its_time),
         cmocka_unit_test(test_every_sample_ends_in_one_counter_when_the_step_fails),
         cmocka_unit_test(test_init_refuses_means_beyond_the_physical_bounds),

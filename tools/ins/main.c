@@ -51,7 +51,7 @@
 typedef struct {
     double imu_rate; /* --imu-rate [Hz]; 0: not given */
     double lat_deg, max_gap, gate, horizon, max_outage, preint, lever[3];
-    double alpha, zupt_sv, floor_sigma;
+    double alpha, zupt_sv, zupt_lever, floor_sigma;
     int64_t recover, window;
     int profile, earth, bias, zupt;
 } filter_opts_t;
@@ -117,9 +117,12 @@ static void usage(FILE *f)
             "  --zupt-alpha A        detector's false-motion probability at rest (0.01)\n"
             "  --zupt-sigma-v S      1-sigma of v = 0 at rest [m/s] (0.01; the preset's\n"
             "                        with --preset; this option overrides both)\n"
+            "  --zupt-lever L        distance [m] from the point a body at rest turns\n"
+            "                        about: the ZUPT's 1-sigma grows with the rate (0;\n"
+            "                        the preset's 0.2 with --preset; ins.h)\n"
             "  --floor-sigma S       with --preset foot: 1-sigma of the floor level at\n"
-            "                        each stance [m] (the preset's 0.01), 0 = no floor\n"
-            "                        updates (ins.h, \"Floor\")\n"
+            "                        each stance [m] (the preset's: 0, no floor updates;\n"
+            "                        0.01 its argued value; ins.h, \"Floor\")\n"
             "  --max-gap S           longest interval one sample may bridge (25 samples)\n"
             "  --max-outage S        longest outage carried across (10)\n"
             "  --preint S            publish preintegrated factors of S seconds (0 = off)\n"
@@ -212,6 +215,7 @@ static int parse_args(int argc, char **argv, node_opts_t *o)
         {"--zupt-window", HOPT_I64, &f->window, 0, 0, NULL},
         {"--zupt-alpha", HOPT_DOUBLE, &f->alpha, 1e-6, 0.5, NULL},
         {"--zupt-sigma-v", HOPT_DOUBLE, &f->zupt_sv, 1e-6, 1e3, NULL},
+        {"--zupt-lever", HOPT_DOUBLE, &f->zupt_lever, 0.0, 1.0, NULL},
         {"--floor-sigma", HOPT_DOUBLE, &f->floor_sigma, 0.0, 1e3, NULL},
         {"--max-gap", HOPT_DOUBLE, &f->max_gap, 1e-6, 1.0, NULL},
         {"--max-outage", HOPT_DOUBLE, &f->max_outage, 0.0, (double)SE23_INS_MAX_OUTAGE, NULL},
@@ -231,6 +235,7 @@ static int parse_args(int argc, char **argv, node_opts_t *o)
     f->max_outage = 10.0;
     f->alpha = 0.01;
     f->zupt_sv = -1.0;
+    f->zupt_lever = -1.0;
     f->floor_sigma = -1.0;
     f->recover = 5;
     f->window = 20;
@@ -306,6 +311,9 @@ static int build_config(const node_opts_t *o, double rate, const char *rate_from
     }
     if (f->zupt_sv > 0.0) {
         c->zupt_sigma_v = f->zupt_sv;
+    }
+    if (f->zupt_lever >= 0.0) {
+        c->zupt_lever = f->zupt_lever;
     }
     if (f->floor_sigma >= 0.0) {
         c->floor_sigma = f->floor_sigma;

@@ -38,8 +38,9 @@ void gen_print_config(const se23_ins_config_t *c)
     printf("   .preint_window = %.17g, .zupt = %d,\n", c->preint_window, c->zupt);
     printf("   .detector = {%d, %.17g, %.17g, %.17g, %.17g}, .gravity_test_off = %d,\n",
            d->window, d->sigma_a, d->sigma_g, d->gravity, d->threshold, c->gravity_test_off);
-    printf("   .zupt_sigma_v = %.17g, .zaru_sigma_w = %.17g, .zaru_after = %.17g,\n",
-           c->zupt_sigma_v, c->zaru_sigma_w, c->zaru_after);
+    printf("   .zupt_sigma_v = %.17g, .zupt_lever = %.17g, .zaru_sigma_w = %.17g,\n",
+           c->zupt_sigma_v, c->zupt_lever, c->zaru_sigma_w);
+    printf("   .zaru_after = %.17g,\n", c->zaru_after);
     printf("   .floor_sigma = %.17g, .floor_step = %.17g, .floor_swing = %.17g},\n",
            c->floor_sigma, c->floor_step, c->floor_swing);
 }

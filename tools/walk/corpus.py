@@ -12,6 +12,8 @@ against the recording's truth. Prints one table; exits 1 if a recording
 could not be run.
 
 Scores (README "Real walks"):
+  dist      the distance walked: the truth's path where there is one, else
+            the estimate's through its stance positions
   closure   the position at the start of the last stance, and at the end,
             minus the start, against the truth's displacement over the same
             span (0 for a closed loop); horizontal, after the heading
@@ -217,8 +219,9 @@ def per_sample_truth(t_truth, p_truth):
         eh = np.hypot(e[:, 0], e[:, 1])
         return {"rmse": float(np.sqrt(np.mean(eh ** 2))),
                 "armse": float(np.mean(eh / math.sqrt(2))),
+                "dist": float(np.sum(np.hypot(*np.diff(tp[:, :2], axis=0).T))),
                 "nees": float(np.mean(n2[1:])), "nees_end": float(n2[-1]), "dof": 2,
-                "truth_disp": tp[-1], "rot": rot}
+                "truth_disp": tp[-1], "rot": rot, "path": (est_h, tp[:, :2])}
     return score
 
 
@@ -226,8 +229,8 @@ def footprint_truth(t_rows, gcp):
     def score(nav):
         t = nav["t_ns"] * 1e-9
         idx = np.searchsorted(t, t_rows).clip(0, len(t) - 1)
-        est_h = np.column_stack([nav["pN"], nav["pE"]])[idx]
-        est_h = est_h - est_h[0]
+        full = np.column_stack([nav["pN"], nav["pE"]])
+        est_h = full[idx] - full[idx[0]]
         k = min(3, len(gcp) - 1)
         tp = (gcp - gcp[0]) @ heading_fit(est_h, gcp - gcp[0], k).T
         e = est_h - tp
@@ -236,7 +239,9 @@ def footprint_truth(t_rows, gcp):
         disp = np.zeros(3)
         disp[:2] = tp[-1]
         return {"rmse": float(np.sqrt(np.mean(eh[1:] ** 2))), "nees": float(np.mean(n2[1:])),
-                "nees_end": float(n2[-1]), "dof": 2, "truth_disp_h": disp}
+                "dist": float(np.sum(np.hypot(*np.diff(tp, axis=0).T))),
+                "nees_end": float(n2[-1]), "dof": 2, "truth_disp_h": disp,
+                "path": (full - full[idx[0]], tp)}
     return score
 
 
@@ -289,8 +294,10 @@ def evaluate(rec, nav, summ):
     dist = float(np.sum(np.linalg.norm(np.diff(p[[0] + starts], axis=0), axis=1))) \
         if starts else 0.0
     sc = rec.truth(nav)
-    out = {"dist": dist, "stances": len(starts), "floor": summ.get("floor_levels", "?"),
-           "range": summ.get("imu_range", "?"), "sc": sc}
+    # the distance walked: the truth's where there is one (the estimate's
+    # stance positions miss a stride the detector missed)
+    out = {"dist": sc.get("dist", dist), "stances": len(starts), "p": p[:, :2] - p[0, :2],
+           "floor": summ.get("floor_levels", "?"), "range": summ.get("imu_range", "?"), "sc": sc}
     for tag, k in (("last", last), ("end", len(p) - 1)):
         e = p[k] - p[0]
         if "truth_disp" in sc:
@@ -337,6 +344,37 @@ def run_filter(a, rec, w, name):
     return r
 
 
+def plot_paths(path, rows, run):
+    """Top views, one per recording: the estimate and its aligned truth."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    n = len(rows)
+    cols = 6
+    fig, axes = plt.subplots((n + cols - 1) // cols, cols, figsize=(3 * cols, 3 * ((n + cols - 1) // cols)))
+    for ax in np.ravel(axes)[n:]:
+        ax.axis("off")
+    for ax, (rec, res) in zip(np.ravel(axes), rows):
+        r = res.get(run)
+        if r is None or "path" not in r["sc"]:
+            est = r["p"] if r is not None else None
+            if est is not None:
+                ax.plot(est[:, 1], est[:, 0], lw=0.7, color="tab:blue")
+                ax.plot([0], [0], "k^", ms=4)
+        else:
+            est, tru = r["sc"]["path"]
+            marker = "o" if len(tru) < 200 else None
+            ax.plot(tru[:, 1], tru[:, 0], lw=0.7, color="tab:gray", marker=marker, ms=2)
+            ax.plot(est[:, 1], est[:, 0], lw=0.7, color="tab:blue")
+        ax.set_title(f"{rec.name}\nH end {r['ch_end']:.2f} m" if r else rec.name, fontsize=8)
+        ax.set_aspect("equal", "datalim")
+        ax.tick_params(labelsize=6)
+    fig.suptitle(f"se23 pedestrian preset ({run}): estimate (blue) and truth (grey), "
+                 "north up, metres", fontsize=10)
+    fig.tight_layout(rect=(0, 0, 1, 0.97))
+    fig.savefig(path, dpi=80)
+
+
 def write_summary(path, rows):
     """One line per recording and run: the table's figures, for scripts."""
     with open(path, "w", newline="") as fh:
@@ -364,6 +402,7 @@ def main():
     ap.add_argument("--runs", default="double,float,floor",
                     help="which runs, of " + ",".join(RUNS) + " (the first is tabled)")
     ap.add_argument("--summary", help="write every run's figures to this CSV")
+    ap.add_argument("--plot", help="top views of every recording into this PNG")
     ap.add_argument("--ins-opts", default="", help="extra se23-ins options (experiments)")
     ap.add_argument("dirs", nargs="+")
     a = ap.parse_args()
@@ -401,6 +440,8 @@ def main():
     print_table(rows, runs)
     if a.summary:
         write_summary(a.summary, rows)
+    if a.plot:
+        plot_paths(a.plot, rows, runs[0])
     return 1 if failed else 0
 
 

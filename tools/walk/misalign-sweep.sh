@@ -24,7 +24,7 @@ printf '%-16s %8s %8s %8s %9s\n' "misalign [deg]" "3D [m]" "horiz" "vert" "ZUPT 
 for r in $VECTORS; do
     "$BIN/se23-import" --accel-misalign "$r" --out "file://$RUN/imu.log?mode=w" "$CSV" >/dev/null
     # shellcheck disable=SC2086 # INS_OPTS splits into options on purpose
-    "$BIN/se23-ins" --preset foot --imu-rate 400 --lat 51.45 --nav-rate 400 ${INS_OPTS:-} \
+    "$BIN/se23-ins" --preset foot --lat 51.45 --nav-rate 100000 ${INS_OPTS:-} \
         --in "file://$RUN/imu.log?speed=0" --out "file://$RUN/ins.log?mode=w" >"$RUN/summary.txt"
     nis=$(awk '$1 == "zupt_nis_mean" { print $2 }' "$RUN/summary.txt")
     "$BIN/se23-walk" "$RUN/ins.log" | sed -n 's/^  closure error *\([0-9.]*\) m 3D, \([0-9.]*\) m horizontal, \([0-9.]*\) m vertical$/\1 \2 \3/p' |
