@@ -143,7 +143,8 @@ walk-corpus:
 	@test -n "$(DIR)" || { echo "make walk-corpus: give DIR=folder of recordings" >&2; exit 2; }
 	@sh tools/install-deps.sh $(BUILD)
 	@$(MAKE) -s --no-print-directory harness BUILD=$(BUILD)
-	@/usr/bin/python3 tools/walk/corpus.py --bin $(H_BIN) --run $(H)/walk-corpus $(DIR)
+	@/usr/bin/python3 tools/walk/corpus.py --bin $(H_BIN) --run $(H)/walk-corpus \
+	    --summary $(H)/walk-corpus.csv --plot $(H)/walk-corpus.png $(DIR)
 
 walk-misalign:
 	@sh tools/install-deps.sh $(BUILD)

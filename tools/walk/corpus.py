@@ -372,7 +372,7 @@ def plot_paths(path, rows, run):
     fig.suptitle(f"se23 pedestrian preset ({run}): estimate (blue) and truth (grey), "
                  "north up, metres", fontsize=10)
     fig.tight_layout(rect=(0, 0, 1, 0.97))
-    fig.savefig(path, dpi=80)
+    fig.savefig(path, dpi=60)
 
 
 def write_summary(path, rows):
