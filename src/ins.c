@@ -162,6 +162,7 @@ se23_status_t se23_ins_setup(const se23_ins_config_t *cfg, se23_ins_t *ins)
         const se23_ins_counters_t none = {0};
         const se23_real_t per_gap = cfg->max_gap / cfg->dt_nominal;
         ins->cfg = *cfg;
+        ins->noise = cfg->noise;
         ins->model = model;
         ins->status = 0U;
         if (cfg->earth_rotation != 0) {

@@ -22,6 +22,7 @@ static se23_status_t align_check(const se23_ins_t *ins, const se23_ins_align_t *
         st = SE23_ERR_NONFINITE;
     } else if ((ins->cfg.zupt == 0) || ((a->gyrocompass != 0) && (ins->cfg.earth_rotation == 0)) ||
                (a->sigma_p <= SE23_R(0)) || (a->sigma_v <= SE23_R(0)) ||
+               (((a->measure_noise != 0) && (a->measure_noise != 1))) ||
                ((a->gyrocompass == 0) && (a->course_speed <= SE23_R(0)) &&
                 (a->sigma_yaw <= SE23_R(0))) ||
                (a->course_speed < SE23_R(0)) ||
@@ -52,6 +53,7 @@ se23_status_t se23_ins_align(se23_ins_t *ins, const se23_ins_align_t *a)
         return st;
     }
     ins->align = *a;
+    ins->noise = ins->cfg.noise; /* until the rest measures it */
     se23_ins_drop_pending(ins); /* stamped for the state that ends here */
     ins->status = (ins->status & SE23_INS_ST_EARTH_RATE) | SE23_INS_ST_ALIGNING;
     se23_stationary_reset(&ins->det);
@@ -241,6 +243,12 @@ se23_ins_verdict_t se23_ins_align_sample(se23_ins_t *ins, int64_t t_ns,
     se23_ins_align_reset_sums(ins);
     if (st != SE23_OK) {
         return SE23_INS_EARLY; /* not usable (e.g. |f| far from g): keep aligning */
+    }
+    if (ins->align.measure_noise != 0) {
+        /* window_std is floored at the configured density / sqrt(dt) */
+        const se23_real_t rt = se23_sqrt(ins->cfg.dt_nominal);
+        ins->noise.gyro_noise = window_std(ins, &w_var, ins->cfg.noise.gyro_noise) * rt;
+        ins->noise.accel_noise = window_std(ins, &f_var, ins->cfg.noise.accel_noise) * rt;
     }
     se23_ins_start(ins, t_ns, &ins->work);
     ins->last = *s;

@@ -66,7 +66,8 @@ int se23_ins_predict_interval(se23_ins_t *ins, const se23_imu_sample_t *s)
 }
 
 /*
- * The noise of sample s: the white densities plus the motion noise (ins.h,
+ * The noise of sample s: the white densities (ins->noise: configured or
+ * measured at the alignment) plus the motion noise (ins.h,
  * "Motion noise") of the corrected readings w = w_meas + b_g, f = f_meas +
  * b_a. 16 multiply-adds, 2 square roots; every term is bounded by the
  * ranges and the configuration's limits, so the densities stay finite.
@@ -77,7 +78,7 @@ static void sample_noise(const se23_ins_t *ins, const se23_imu_sample_t *s,
     const se23_ins_motion_noise_t *m = &ins->cfg.motion;
     se23_vec3_t w, f;
     se23_real_t w2, f2;
-    *noise = ins->cfg.noise;
+    *noise = ins->noise;
     if (m->corr_time <= SE23_R(0)) {
         return;
     }

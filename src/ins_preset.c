@@ -145,6 +145,7 @@ se23_status_t se23_ins_preset_foot(se23_real_t rate_hz, se23_real_t lat,
     a.sigma_bg = DEG;
     a.sigma_ba = SE23_R(5e-3) * SE23_R(9.80665);
     a.duration = SE23_R(0.5);
+    a.measure_noise = 1; /* what this unit shows at rest, the data sheet a floor */
     *cfg = c;
     *align = a;
     return SE23_OK;

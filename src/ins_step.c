@@ -45,7 +45,7 @@ void se23_ins_factor_add(se23_ins_t *ins, const se23_imu_sample_t *prev,
     /* the same sub-intervals as the filter's prediction */
     for (j = 1; j <= n; ++j) {
         se23_ins_gap_sample(prev, s, j, n, &u);
-        if (se23_preint_unc_add_work(&ins->fac.f, &u, &ins->cfg.noise, &ins->kernel.preint) !=
+        if (se23_preint_unc_add_work(&ins->fac.f, &u, &ins->noise, &ins->kernel.preint) !=
             SE23_OK) {
             se23_ins_count(&ins->c.filter_errors);
             se23_ins_factor_reset(ins);

@@ -105,8 +105,8 @@
  * any fix within the horizon has a snapshot before it. Fusing a fix stamped
  * d seconds late costs the replay of up to d + delay_horizon seconds of
  * samples (prediction and the zero-velocity updates), in that call.
- * Memory: sizeof(se23_ins_t) = 17,544 B + SE23_INS_RING x 72 B in double,
- * 9,000 B + SE23_INS_RING x 48 B in float (26,760 / 15,144 B with the
+ * Memory: sizeof(se23_ins_t) = 17,584 B + SE23_INS_RING x 72 B in double,
+ * 9,016 B + SE23_INS_RING x 48 B in float (26,800 / 15,160 B with the
  * default ring; README "The navigation filter"; test_ins.c asserts it),
  * the kernels' work areas included (1,512 / 756 B, kept here and not on
  * the stack of the calls);
@@ -178,6 +178,10 @@
  * or, with gyrocompass set, from the Earth rate the gyro senses; the
  * attitude covariance from the window's statistics, v = 0, p and the bias
  * covariances from the caller. Until then samples are counted imu_early.
+ * With measure_noise set, the white-noise densities the filter propagates
+ * from then on are the larger of the configured ones and those the rest
+ * shows (the std of a sample over the window's axes, x sqrt(dt_nominal)):
+ * the data sheet is the floor, what this unit shows at rest the estimate.
  *
  * Validation (types.h): the configuration is checked by se23_ins_setup, an
  * initial state or alignment request by se23_ins_init / se23_ins_align (with
@@ -389,6 +393,8 @@ typedef struct {
                                    speed exceeds this [m/s] (yaw, sigma_yaw unused) */
     se23_real_t course_sigma; /**< 1-sigma of the body heading about the course
                                    (sideslip, crab) [rad] (course_speed > 0) */
+    int measure_noise;        /**< nonzero: the noise densities from the rest too,
+                                   the configured ones a floor ("Alignment") */
 } se23_ins_align_t;
 
 /** Running sums of an alignment: deviations from its first sample (no
@@ -487,6 +493,8 @@ typedef struct {
     se23_earth_model_t model;
     se23_ins_counters_t c;
     se23_ins_config_t cfg;
+    se23_imu_noise_t noise;       /**< the white noise propagated: cfg.noise, or
+                                   *   raised by a measuring alignment */
     se23_stationary_t det;
     se23_meas_t meas;             /**< scratch of the updates */
     se23_gauss_t g;               /**< state in the model's coordinates */

@@ -101,7 +101,7 @@ extern const int insr_n_thresholds;
 
 /** Reals and integers of a configuration with its alignment request. */
 #define INSR_FLAT_REALS 45
-#define INSR_FLAT_INTS 7
+#define INSR_FLAT_INTS 8
 
 /** r, iv = every real and every integer field of c and a, in a fixed
  *  order (for field-by-field comparisons). */

@@ -167,7 +167,7 @@ void insr_flatten(const se23_ins_config_t *c, const se23_ins_align_t *a,
         c->motion.gyro_g, c->motion.corr_time, c->zupt_lever};
     const int ints[INSR_FLAT_INTS] = {c->earth_rotation, c->bias_states, c->gate_recover,
                                       c->zupt, c->detector.window, a->gyrocompass,
-                                      c->gravity_test_off};
+                                      c->gravity_test_off, a->measure_noise};
     memcpy(r, reals, sizeof reals);
     memcpy(iv, ints, sizeof ints);
 }

@@ -282,6 +282,52 @@ static void test_heading_from_gnss_course(void **state)
     assert_int_equal(se23_ins_align(&ins, &a), SE23_ERR_DOMAIN); /* no course_sigma */
 }
 
+/* measure_noise (ins.h, "Alignment"): the densities the filter propagates
+ * become those the rest shows where they are above the configured ones
+ * (the data sheet a floor), the configured ones where the rest is
+ * quieter; without it they stay configured. The rest's noise is IT_SG,
+ * IT_SA per sample: densities IT_SG sqrt(dt), IT_SA sqrt(dt). */
+static void test_alignment_measures_the_noise(void **state)
+{
+    (void)state;
+    const double dt = 1.0 / IT_RATE;
+    const double want_g = IT_SG * sqrt(dt), want_a = IT_SA * sqrt(dt);
+    for (int k = 0; k < 3; ++k) {
+        se23_ins_config_t c;
+        se23_ins_align_t a;
+        se23t_rng_t rng;
+        se23t_rng_seed(&rng, 34u + (unsigned)k);
+        it_config(&c, 1);
+        align_request(&a);
+        a.duration = SE23_R(2); /* 400 samples, 1,200 readings per sensor */
+        /* k = 0: a data sheet 10x below the unit; 1: 10x above; 2: no measuring */
+        const double scale = (k == 1) ? 10.0 : 0.1;
+        c.noise.gyro_noise = (se23_real_t)(want_g * scale);
+        c.noise.accel_noise = (se23_real_t)(want_a * scale);
+        a.measure_noise = (k == 2) ? 0 : 1;
+        assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
+        assert_int_equal(se23_ins_align(&ins, &a), SE23_OK);
+        assert_true(align_at(NULL, &rng, NULL) > 0);
+        if (k == 0) { /* measured: within 10 % (the std's sampling error is 2 %) */
+            assert_near((double)ins.noise.gyro_noise, want_g, 0.0, 0.1);
+            assert_near((double)ins.noise.accel_noise, want_a, 0.0, 0.1);
+        } else { /* the configured densities */
+            assert_true(ins.noise.gyro_noise == c.noise.gyro_noise);
+            assert_true(ins.noise.accel_noise == c.noise.accel_noise);
+        }
+    }
+    /* a request with measure_noise neither 0 nor 1 is refused */
+    {
+        se23_ins_config_t c;
+        se23_ins_align_t a;
+        it_config(&c, 1);
+        align_request(&a);
+        a.measure_noise = 2;
+        assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
+        assert_int_equal(se23_ins_align(&ins, &a), SE23_ERR_DOMAIN);
+    }
+}
+
 static void test_align_rejects_what_it_cannot_use(void **state)
 {
     (void)state;
@@ -336,6 +382,7 @@ int main(void)
         cmocka_unit_test(test_alignment_models_the_bias_tilt),
         cmocka_unit_test(test_gyrocompass_on_rotating_earth),
         cmocka_unit_test(test_heading_from_gnss_course),
+        cmocka_unit_test(test_alignment_measures_the_noise),
         cmocka_unit_test(test_align_rejects_what_it_cannot_use),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -687,6 +687,10 @@ static void summary(const node_t *nd, int64_t skipped, double cpu_s)
     printf("  %-20s %.3f\n", "imu_rate_hz", nd->imu_rate);
     printf("  %-20s %s\n", "imu_rate_from", nd->rate_from);
     printf("  %-20s %.3f\n", "log_imu_rate_hz", nd->log_rate);
+    /* the white noise propagated: configured, or measured at the alignment */
+    printf("  %-20s %.5f\n", "gyro_noise_dps_rthz", (double)nd->ins.noise.gyro_noise / DEG);
+    printf("  %-20s %.1f\n", "accel_noise_ug_rthz",
+           (double)nd->ins.noise.accel_noise / 9.80665 * 1e6);
     printf("  %-20s %.3f\n", "cpu_seconds", cpu_s);
     printf("  %-20s %.0f\n", "samples_per_s", cpu_s > 0.0 ? (double)c->imu_used / cpu_s : 0.0);
 }

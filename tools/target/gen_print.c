@@ -50,9 +50,10 @@ void gen_print_align(const se23_ins_align_t *a)
     printf("{");
     gen_vec("p_n", &a->p_n);
     printf(" .sigma_p = %.17g, .yaw = %.17g, .sigma_yaw = %.17g, .gyrocompass = %d,\n"
-           "         .sigma_v = %.17g, .sigma_bg = %.17g, .sigma_ba = %.17g, .duration = %.17g},\n",
+           "         .sigma_v = %.17g, .sigma_bg = %.17g, .sigma_ba = %.17g, .duration = %.17g,\n"
+           "         .measure_noise = %d},\n",
            a->sigma_p, a->yaw, a->sigma_yaw, a->gyrocompass, a->sigma_v, a->sigma_bg,
-           a->sigma_ba, a->duration);
+           a->sigma_ba, a->duration, a->measure_noise);
 }
 
 void gen_print_start(const insr_start_t *s)

@@ -297,7 +297,8 @@ def evaluate(rec, nav, summ):
     # the distance walked: the truth's where there is one (the estimate's
     # stance positions miss a stride the detector missed)
     out = {"dist": sc.get("dist", dist), "stances": len(starts), "p": p[:, :2] - p[0, :2],
-           "floor": summ.get("floor_levels", "?"), "range": summ.get("imu_range", "?"), "sc": sc}
+           "floor": summ.get("floor_levels", "?"), "range": summ.get("imu_range", "?"), "sc": sc,
+           "noise": (summ.get("gyro_noise_dps_rthz", "nan"), summ.get("accel_noise_ug_rthz", "nan"))}
     for tag, k in (("last", last), ("end", len(p) - 1)):
         e = p[k] - p[0]
         if "truth_disp" in sc:
@@ -381,7 +382,7 @@ def write_summary(path, rows):
         out = csv.writer(fh)
         out.writerow(["recording", "run", "rate_hz", "dist_m", "stances", "c3_last", "ch_last",
                       "c3_end", "ch_end", "nc_end", "rmse_h", "armse", "nees_avg", "nees_end",
-                      "floor_levels", "imu_range"])
+                      "floor_levels", "imu_range", "gyro_noise_dps_rthz", "accel_noise_ug_rthz"])
         for rec, res in rows:
             for name, r in res.items():
                 sc = r["sc"]
@@ -392,7 +393,7 @@ def write_summary(path, rows):
                               f"{sc.get('armse', float('nan')):.4f}",
                               f"{sc.get('nees', float('nan')):.3f}",
                               f"{sc.get('nees_end', float('nan')):.3f}", r["floor"],
-                              r["range"]])
+                              r["range"], r["noise"][0], r["noise"][1]])
 
 
 def main():
@@ -453,13 +454,15 @@ PYSHOE_SHOE_MEDIAN = 0.050
 
 def print_table(rows, runs):
     p0 = runs[0]
-    hdr = ("recording", "Hz", "dist m", "stances", "closure 3D/H last", "closure 3D/H end",
-           "H % dist", "rmse H", "ARMSE", "NEES avg/end", "bound", "range")
-    fmt = "{:<28} {:>6} {:>7} {:>7} {:>17} {:>17} {:>8} {:>7} {:>6} {:>13} {:>6} {:>5}"
+    hdr = ("recording", "Hz", "noise", "dist m", "stances", "closure 3D/H last",
+           "closure 3D/H end", "H % dist", "rmse H", "ARMSE", "NEES avg/end", "bound", "range")
+    fmt = "{:<28} {:>6} {:>10} {:>7} {:>7} {:>17} {:>17} {:>8} {:>7} {:>6} {:>13} {:>6} {:>5}"
     extra = ("  float H end" if "float" in runs[1:] else "") + \
         ("  floor: levels, H end" if "floor" in runs[1:] else "")
-    print(f"run: {p0}; float: the float build's horizontal closure at the end; floor: the "
-          f"levels the floor assumption counts (one floor: 1) and its closure")
+    print(f"run: {p0}; noise: the white noise the filter took from the first rest, gyro "
+          f"deg/s/sqrt(Hz) and accelerometer ug/sqrt(Hz) (floors 0.007 and 180); float: the "
+          f"float build's horizontal closure at the end; floor: the levels the floor "
+          f"assumption counts (one floor: 1) and its closure")
     print(fmt.format(*hdr) + extra)
     armse, in_avg, in_end, n_truth, pct_ok = [], 0, 0, 0, 0
     for rec, res in rows:
@@ -484,7 +487,9 @@ def print_table(rows, runs):
         if rec.name.startswith("pyshoe-"):
             armse.append(sc["armse"])
         line = fmt.format(
-            rec.name, f"{r['rate']:.1f}", f"{r['dist']:.1f}", r["stances"],
+            rec.name, f"{r['rate']:.1f}",
+            f"{float(r['noise'][0]):.3f}/{float(r['noise'][1]):.0f}", f"{r['dist']:.1f}",
+            r["stances"],
             f"{r['c3_last']:.3f}/{r['ch_last']:.3f}", f"{r['c3_end']:.3f}/{r['ch_end']:.3f}",
             f"{pct:.2f}", f"{sc['rmse']:.3f}" if "rmse" in sc else "-",
             f"{sc['armse']:.3f}" if "armse" in sc else "-", nees, f"{bound:.2f}", r["range"])
