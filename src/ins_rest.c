@@ -11,15 +11,10 @@
 /* chi^2_3 quantile at 0.999: the mean acceleration test of at_rest. */
 #define ACCEL_TEST_Q SE23_R(16.27)
 
-/* A = P's 3x3 block at (row, col). */
-static void p_block(const se23_gauss_t *g, int row, int col, se23_mat3_t *A)
+/* Entry (row, col) of g's covariance. */
+static se23_real_t p_at(const se23_gauss_t *g, int row, int col)
 {
-    int i, j;
-    for (i = 0; i < 3; ++i) {
-        for (j = 0; j < 3; ++j) {
-            A->m[i][j] = g->P.m[se23_ins_idx(row + i, col + j)];
-        }
-    }
+    return g->P.m[se23_ins_idx(row, col)];
 }
 
 /*
@@ -28,9 +23,14 @@ static void p_block(const se23_gauss_t *g, int row, int col, se23_mat3_t *A)
  * frame, against its covariance at rest
  *   C = sigma_a^2 / W I + M P M^T,  M = [-f^, I] on (phi, db_a)
  * (a_true - a = -f^ phi + db_a to first order, f the corrected specific
- * force; with 9 states only the phi term). C is symmetric positive
- * definite (sigma_a > 0); a^T C^-1 a by its adjugate. About 150
- * multiply-adds.
+ * force; with 9 states only the phi term):
+ *   C = f^ P_pp f^T - G - G^T + P_aa + sigma_a^2 / W I,  G = f^ P_pa.
+ * C is symmetric positive definite (sigma_a > 0); a^T C^-1 a by its
+ * adjugate. Straight-line over the structure (f^ has a zero diagonal, C
+ * is symmetric): T = f^ P_pp, the 8 entries C needs (16 multiply-adds),
+ * T f^T on the lower triangle (12), G (18), a (9), the adjugate (12), its
+ * determinant (3), the quadratic form (12): 82 multiply-adds, 64 without
+ * the bias terms (about 150 with general 3x3 products).
  */
 static se23_real_t accel_nis(const se23_ins_t *ins, const se23_vec3_t *fbar_n,
                              const se23_vec3_t *f_b)
@@ -38,39 +38,61 @@ static se23_real_t accel_nis(const se23_ins_t *ins, const se23_vec3_t *fbar_n,
     const se23_gauss_t *g = &ins->g;
     const se23_real_t s2 = (ins->det.cfg.sigma_a * ins->det.cfg.sigma_a) /
                            (se23_real_t)ins->det.cfg.window;
-    se23_mat3_t F, B, T, C, adj;
-    se23_vec3_t a_n, a, y;
-    int i;
-    se23_v3_axpy(fbar_n, SE23_R(1), &ins->model.g_n, &a_n);
-    se23_m3_tmul_v3(&g->T.R, &a_n, &a);
-    se23_m3_skew(f_b, &F);
-    p_block(g, SE23_IDX_PHI, SE23_IDX_PHI, &B);
-    se23_m3_mul(&F, &B, &T);
-    se23_m3_mul_nt(&T, &F, &C); /* f^ P_phiphi f^T */
+    const se23_real_t f0 = f_b->v[0], f1 = f_b->v[1], f2 = f_b->v[2];
+    /* T = f^ B, B = P_pp; rows of f^: (0, -f2, f1), (f2, 0, -f0), (-f1, f0, 0) */
+    const se23_real_t b00 = p_at(g, 0, 0), b01 = p_at(g, 0, 1), b02 = p_at(g, 0, 2);
+    const se23_real_t b11 = p_at(g, 1, 1), b12 = p_at(g, 1, 2), b22 = p_at(g, 2, 2);
+    const se23_real_t t01 = (f1 * b12) - (f2 * b11), t02 = (f1 * b22) - (f2 * b12);
+    const se23_real_t t10 = (f2 * b00) - (f0 * b02), t11 = (f2 * b01) - (f0 * b12),
+                      t12 = (f2 * b02) - (f0 * b22);
+    const se23_real_t t20 = (f0 * b01) - (f1 * b00), t21 = (f0 * b11) - (f1 * b01),
+                      t22 = (f0 * b12) - (f1 * b02);
+    /* C = T f^T + s2 I, lower triangle: C_ij = T_i . (row j of f^) */
+    se23_real_t c00 = ((f1 * t02) - (f2 * t01)) + s2;
+    se23_real_t c10 = (f1 * t12) - (f2 * t11);
+    se23_real_t c11 = ((f2 * t10) - (f0 * t12)) + s2;
+    se23_real_t c20 = (f1 * t22) - (f2 * t21);
+    se23_real_t c21 = (f2 * t20) - (f0 * t22);
+    se23_real_t c22 = ((f0 * t21) - (f1 * t20)) + s2;
     if (g->n == SE23_GAUSS_N_BIAS) {
-        p_block(g, SE23_IDX_PHI, SE23_IDX_BA, &B);
-        se23_m3_mul(&F, &B, &T); /* f^ P_phi,ba */
-        se23_m3_axpy(&C, SE23_R(-1), &T, &C);
-        se23_m3_transpose(&T, &B);
-        se23_m3_axpy(&C, SE23_R(-1), &B, &C);
-        p_block(g, SE23_IDX_BA, SE23_IDX_BA, &B);
-        se23_m3_axpy(&C, SE23_R(1), &B, &C);
+        /* G = f^ X, X = P_pa (rows phi, columns b_a); C -= G + G^T, += P_aa */
+        const int a = SE23_IDX_BA;
+        const se23_real_t x00 = p_at(g, 0, a), x01 = p_at(g, 0, a + 1), x02 = p_at(g, 0, a + 2);
+        const se23_real_t x10 = p_at(g, 1, a), x11 = p_at(g, 1, a + 1), x12 = p_at(g, 1, a + 2);
+        const se23_real_t x20 = p_at(g, 2, a), x21 = p_at(g, 2, a + 1), x22 = p_at(g, 2, a + 2);
+        const se23_real_t g00 = (f1 * x20) - (f2 * x10), g01 = (f1 * x21) - (f2 * x11),
+                          g02 = (f1 * x22) - (f2 * x12);
+        const se23_real_t g10 = (f2 * x00) - (f0 * x20), g11 = (f2 * x01) - (f0 * x21),
+                          g12 = (f2 * x02) - (f0 * x22);
+        const se23_real_t g20 = (f0 * x10) - (f1 * x00), g21 = (f0 * x11) - (f1 * x01),
+                          g22 = (f0 * x12) - (f1 * x02);
+        c00 += p_at(g, a, a) - (g00 + g00);
+        c10 += p_at(g, a + 1, a) - (g10 + g01);
+        c11 += p_at(g, a + 1, a + 1) - (g11 + g11);
+        c20 += p_at(g, a + 2, a) - (g20 + g02);
+        c21 += p_at(g, a + 2, a + 1) - (g21 + g12);
+        c22 += p_at(g, a + 2, a + 2) - (g22 + g22);
     }
-    for (i = 0; i < 3; ++i) {
-        C.m[i][i] += s2;
-    }
-    /* adjugate of the symmetric C */
-    adj.m[0][0] = (C.m[1][1] * C.m[2][2]) - (C.m[1][2] * C.m[2][1]);
-    adj.m[0][1] = (C.m[0][2] * C.m[2][1]) - (C.m[0][1] * C.m[2][2]);
-    adj.m[0][2] = (C.m[0][1] * C.m[1][2]) - (C.m[0][2] * C.m[1][1]);
-    adj.m[1][1] = (C.m[0][0] * C.m[2][2]) - (C.m[0][2] * C.m[2][0]);
-    adj.m[1][2] = (C.m[0][2] * C.m[1][0]) - (C.m[0][0] * C.m[1][2]);
-    adj.m[2][2] = (C.m[0][0] * C.m[1][1]) - (C.m[0][1] * C.m[1][0]);
-    adj.m[1][0] = adj.m[0][1];
-    adj.m[2][0] = adj.m[0][2];
-    adj.m[2][1] = adj.m[1][2];
-    se23_m3_mul_v3(&adj, &a, &y);
-    return se23_v3_dot(&a, &y) / se23_m3_det(&C);
+    /* a = R^T (fbar_n + g_n) */
+    const se23_real_t n0 = fbar_n->v[0] + ins->model.g_n.v[0];
+    const se23_real_t n1 = fbar_n->v[1] + ins->model.g_n.v[1];
+    const se23_real_t n2 = fbar_n->v[2] + ins->model.g_n.v[2];
+    const se23_mat3_t *R = &g->T.R;
+    const se23_real_t a0 = (R->m[0][0] * n0) + (R->m[1][0] * n1) + (R->m[2][0] * n2);
+    const se23_real_t a1 = (R->m[0][1] * n0) + (R->m[1][1] * n1) + (R->m[2][1] * n2);
+    const se23_real_t a2 = (R->m[0][2] * n0) + (R->m[1][2] * n1) + (R->m[2][2] * n2);
+    /* adjugate of the symmetric C, its determinant, a^T adj(C) a / det C */
+    const se23_real_t j00 = (c11 * c22) - (c21 * c21);
+    const se23_real_t j10 = (c20 * c21) - (c10 * c22);
+    const se23_real_t j11 = (c00 * c22) - (c20 * c20);
+    const se23_real_t j20 = (c10 * c21) - (c20 * c11);
+    const se23_real_t j21 = (c20 * c10) - (c00 * c21);
+    const se23_real_t j22 = (c00 * c11) - (c10 * c10);
+    const se23_real_t det = (c00 * j00) + (c10 * j10) + (c20 * j20);
+    const se23_real_t y0 = (j00 * a0) + (j10 * a1) + (j20 * a2);
+    const se23_real_t y1 = (j10 * a0) + (j11 * a1) + (j21 * a2);
+    const se23_real_t y2 = (j20 * a0) + (j21 * a1) + (j22 * a2);
+    return ((a0 * y0) + (a1 * y1) + (a2 * y2)) / det;
 }
 
 /*
@@ -86,21 +108,27 @@ static se23_real_t accel_nis(const se23_ins_t *ins, const se23_vec3_t *fbar_n,
  */
 static int stationary_window(se23_ins_t *ins, const se23_imu_sample_t *s)
 {
-    se23_vec3_t w_ie_b, w, f, f_n, w_mean, fbar_n;
+    const se23_mat3_t *R = &ins->g.T.R;
+    const se23_vec3_t *om = &ins->model.w_ie_n;
+    se23_vec3_t w, f, f_n;
     int stationary = 0;
-    se23_m3_tmul_v3(&ins->g.T.R, &ins->model.w_ie_n, &w_ie_b);
-    se23_v3_axpy(&s->w_ib_b, SE23_R(1), &ins->g.b_g, &w);
-    se23_v3_axpy(&w, SE23_R(-1), &w_ie_b, &w);
-    se23_v3_axpy(&s->f_b, SE23_R(1), &ins->g.b_a, &f);
-    se23_m3_mul_v3(&ins->g.T.R, &f, &f_n);
-    if ((se23_stationary_add(&ins->det, &w, &f_n, &stationary) != SE23_OK) || (stationary == 0) ||
-        (se23_stationary_mean(&ins->det, &w_mean, &fbar_n) != SE23_OK)) {
+    for (int i = 0; i < 3; ++i) {
+        /* w = w_meas + b_g - R^T Omega, f = f_meas + b_a */
+        w.v[i] = (s->w_ib_b.v[i] + ins->g.b_g.v[i]) -
+                 (((R->m[0][i] * om->v[0]) + (R->m[1][i] * om->v[1])) + (R->m[2][i] * om->v[2]));
+        f.v[i] = s->f_b.v[i] + ins->g.b_a.v[i];
+    }
+    for (int i = 0; i < 3; ++i) {
+        f_n.v[i] = ((R->m[i][0] * f.v[0]) + (R->m[i][1] * f.v[1])) + (R->m[i][2] * f.v[2]);
+    }
+    if ((se23_stationary_add(&ins->det, &w, &f_n, &stationary) != SE23_OK) || (stationary == 0)) {
         return 0; /* moving, or (absurd readings) a detector overflow */
     }
     if (ins->cfg.gravity_test_off != 0) {
         return 1;
     }
-    return (accel_nis(ins, &fbar_n, &f) < ACCEL_TEST_Q) ? 1 : 0;
+    /* the window is full: det.fbar is its mean of f_n */
+    return (accel_nis(ins, &ins->det.fbar, &f) < ACCEL_TEST_Q) ? 1 : 0;
 }
 
 int se23_ins_rest_level(se23_ins_t *ins, const se23_imu_sample_t *s, int64_t dt_ns)

@@ -519,12 +519,15 @@ static void test_stationary_mean_var_need_a_full_window(void **state)
     assert_near(a.v[1], 0.02 * 0.02, 0, 16 * SE23T_EPS);
     assert_near(b.v[0], 1.0, 0, 16 * SE23T_EPS);
     assert_near(b.v[2], 0, 64 * (SE23T_EPS * G) * (SE23T_EPS * G), 0);
-    /* A state the library did not produce, whose sums overflow. */
+    /* A state the library did not produce, whose sums overflow: the
+     * samples var sums, the running sums mean reads. */
     se23_stationary_t x = d;
     for (int k = 0; k < 3; ++k) {
         x.f[k].v[0] = (se23_real_t)big;
         x.w[k].v[2] = (se23_real_t)-big;
     }
+    x.recent.sf.v[0] = x.older.sf.v[0] = (se23_real_t)big;
+    x.recent.sw.v[2] = x.older.sw.v[2] = (se23_real_t)-big;
     memset(&a, SENTINEL, sizeof a);
     memset(&b, SENTINEL, sizeof b);
     assert_int_equal(se23_stationary_mean(&x, &a, &b), SE23_ERR_NONFINITE);
