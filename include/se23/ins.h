@@ -105,8 +105,8 @@
  * any fix within the horizon has a snapshot before it. Fusing a fix stamped
  * d seconds late costs the replay of up to d + delay_horizon seconds of
  * samples (prediction and the zero-velocity updates), in that call.
- * Memory: sizeof(se23_ins_t) = 17,584 B + SE23_INS_RING x 72 B in double,
- * 9,016 B + SE23_INS_RING x 48 B in float (26,800 / 15,160 B with the
+ * Memory: sizeof(se23_ins_t) = 17,784 B + SE23_INS_RING x 72 B in double,
+ * 9,120 B + SE23_INS_RING x 48 B in float (27,000 / 15,264 B with the
  * default ring; README "The navigation filter"; test_ins.c asserts it),
  * the kernels' work areas included (1,512 / 756 B, kept here and not on
  * the stack of the calls);
