@@ -7,6 +7,7 @@
 #include <stddef.h>
 
 #include "kalman_parts.h"
+#include "kalman_rest.h"
 #include "linalg.h"
 #include "se23_math.h"
 
@@ -126,18 +127,52 @@ static se23_real_t zupt_sigma(const se23_ins_t *ins, const se23_imu_sample_t *s)
                      ((se23_real_t)ins->det.cfg.window * ((l * l) * se23_v3_dot(&w, &w))));
 }
 
-int se23_ins_zupt(se23_ins_t *ins, const se23_imu_sample_t *s, int rest)
+/*
+ * The rest measurements in the filter's coordinates (kalman_rest.h): a =
+ * R^T Omega, the user's velocity v' - Omega x p in the body frame, the
+ * rate less a. Refused with nothing written (SE23_ERR_DOMAIN) when the
+ * update would pin a variance, and on any error of se23_kalman_rest: the
+ * general path (rest_general) then decides.
+ */
+se23_status_t se23_ins_rest_steady(se23_ins_t *ins, const se23_imu_sample_t *s, int zaru)
+{
+    const se23_gauss_t *g = &ins->g;
+    const se23_mat3_t *R = &g->T.R;
+    const se23_real_t *om = ins->model.w_ie_n.v, *p = g->T.p.v;
+    const se23_real_t sv = zupt_sigma(ins, s);
+    const se23_real_t sw = ins->cfg.zaru_sigma_w;
+    /* the user's velocity v = v' - Omega x p */
+    const se23_real_t v[3] = {g->T.v.v[0] - ((om[1] * p[2]) - (om[2] * p[1])),
+                              g->T.v.v[1] - ((om[2] * p[0]) - (om[0] * p[2])),
+                              g->T.v.v[2] - ((om[0] * p[1]) - (om[1] * p[0]))};
+    se23_rest_meas_t y;
+    for (int i = 0; i < 3; ++i) {
+        /* a = R^T Omega, z_v = -R^T v, z_w = a - (w_meas + b_g) */
+        y.a.v[i] = ((R->m[0][i] * om[0]) + (R->m[1][i] * om[1])) + (R->m[2][i] * om[2]);
+        y.z_v.v[i] = -(((R->m[0][i] * v[0]) + (R->m[1][i] * v[1])) + (R->m[2][i] * v[2]));
+        y.z_w.v[i] = y.a.v[i] - (s->w_ib_b.v[i] + g->b_g.v[i]);
+    }
+    y.r_v = sv * sv;
+    y.r_w = sw * sw;
+    y.zaru = zaru;
+    return se23_kalman_rest(&ins->g, &y, &ins->kernel.kalman, &ins->g, &ins->zupt_nis_last);
+}
+
+/*
+ * The rest updates on the user's state in ins->work, one model after the
+ * other (se23_kalman_update_work), and the floor update if rest has
+ * SE23_INS_REST_FLOOR (*floor: what it did), committed with the filter's
+ * check (commit). The path of a stance's first sample (floor updates on)
+ * and of an update that pins a variance.
+ */
+static se23_status_t rest_general(se23_ins_t *ins, const se23_imu_sample_t *s, int rest,
+                                  int zaru, int *floor)
 {
     const se23_vec3_t zero = {{SE23_R(0), SE23_R(0), SE23_R(0)}};
     const se23_real_t sv = zupt_sigma(ins, s);
     const se23_real_t sw = ins->cfg.zaru_sigma_w;
-    int zaru = 0, floor = FLOOR_NONE;
     se23_mat3_t C;
     se23_status_t st = user_state(ins);
-    if (((rest & SE23_INS_REST_LEVEL) == SE23_INS_REST_ZARU) && (ins->cfg.bias_states != 0) &&
-        (sw > SE23_R(0))) {
-        zaru = 1;
-    }
     diag_cov(sv, sv, sv, &C);
     if (st == SE23_OK) {
         st = se23_meas_vel_nav(&ins->work.T, &zero, &C, &ins->meas);
@@ -158,14 +193,31 @@ int se23_ins_zupt(se23_ins_t *ins, const se23_imu_sample_t *s, int rest)
         }
     }
     if ((st == SE23_OK) && ((rest & SE23_INS_REST_FLOOR) != 0)) {
-        st = floor_update(ins, &floor);
+        st = floor_update(ins, floor);
     }
     if (st == SE23_OK) {
         st = commit(ins);
     }
-    if ((st == SE23_OK) && (floor == FLOOR_LEVEL)) {
+    if ((st == SE23_OK) && (*floor == FLOOR_LEVEL)) {
         ins->floor_d = ins->work.T.p.v[2];
         ins->floor_set = 1;
+    }
+    return st;
+}
+
+int se23_ins_zupt(se23_ins_t *ins, const se23_imu_sample_t *s, int rest)
+{
+    int zaru = 0, floor = FLOOR_NONE;
+    se23_status_t st = SE23_ERR_DOMAIN;
+    if (((rest & SE23_INS_REST_LEVEL) == SE23_INS_REST_ZARU) && (ins->cfg.bias_states != 0) &&
+        (ins->cfg.zaru_sigma_w > SE23_R(0))) {
+        zaru = 1;
+    }
+    if ((rest & SE23_INS_REST_FLOOR) == 0) {
+        st = se23_ins_rest_steady(ins, s, zaru);
+    }
+    if (st != SE23_OK) {
+        st = rest_general(ins, s, rest, zaru, &floor);
     }
     if (ins->replaying != 0) {
         return (st == SE23_OK) ? 1 : 0; /* counted when it was first applied */

@@ -116,6 +116,16 @@ int se23_ins_rest_level(se23_ins_t *ins, const se23_imu_sample_t *s, int64_t dt_
 int se23_ins_zupt(se23_ins_t *ins, const se23_imu_sample_t *s, int rest);
 
 /**
+ * The rest updates of a stationary sample in place on ins->g (zaru: the
+ * ZARU rows too) by the structured update (kalman_rest.h), for the steady
+ * state (ins_aid.c); SE23_OK, or the status on which se23_ins_zupt takes
+ * its general path, nothing written. External linkage keeps GCC -O2 from
+ * inlining it into se23_ins_zupt, whose frame then stays off the stack
+ * under the general path's updates and check (make gates-target).
+ */
+se23_status_t se23_ins_rest_steady(se23_ins_t *ins, const se23_imu_sample_t *s, int zaru);
+
+/**
  * P's rows and columns of block b (first index) zeroed, and its diagonal
  * block set to R^T diag(s^2) R: the covariance, in the body-frame error of
  * gauss.h, of a nav-frame quantity known to 1-sigma s per axis.

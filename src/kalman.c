@@ -22,6 +22,7 @@
 
 #include "argcheck.h"
 #include "kalman_parts.h"
+#include "kalman_rest.h"
 #include "linalg.h"
 #include "se23_math.h"
 
@@ -66,22 +67,6 @@ static se23_status_t check_meas(const se23_meas_t *y, int n, unsigned *mask)
     return se23_meas_cov_check(y->R, m, M);
 }
 
-/* Nonzero if every entry of the mean (v, p, biases) is within
- * SE23_KALMAN_MEAN_MAX
- * (NaN is not). */
-static int mean_in_range(const se23_gauss_t *g)
-{
-    const se23_real_t *parts[4] = {g->T.v.v, g->T.p.v, g->b_g.v, g->b_a.v};
-    for (int k = 0; k < 4; ++k) {
-        for (int i = 0; i < 3; ++i) {
-            if (!(se23_fabs(parts[k][i]) <= SE23_KALMAN_MEAN_MAX)) {
-                return 0;
-            }
-        }
-    }
-    return 1;
-}
-
 /* What both updates check before the covariance half: n, the caller's
  * measurement (mask from scan_h), the mean's range. */
 static se23_status_t update_check(const se23_gauss_t *g, const se23_meas_t *y,
@@ -98,7 +83,7 @@ static se23_status_t update_check(const se23_gauss_t *g, const se23_meas_t *y,
 #else
     se23_status_t st = check_meas(y, g->n, mask);
 #endif
-    if (st == SE23_OK && !mean_in_range(g)) {
+    if (st == SE23_OK && !se23_kalman_mean_in_range(g)) {
         st = SE23_ERR_NONFINITE;
     }
     return st;
@@ -150,6 +135,35 @@ se23_status_t se23_kalman_update_work(const se23_gauss_t *g, const se23_meas_t *
     se23_status_t st = update_check(g, y, &mask);
     if (st == SE23_OK) {
         st = se23_kalman_cov_work(g, y, mask, w, dx, &q, out->P.m);
+    }
+    if (st == SE23_OK) {
+        update_finish(g, dx, q, out, nis);
+    }
+    return st;
+}
+
+/* What the rest update checks of the state before its covariance half:
+ * the mean's range (and with SE23_CFG_DEEP_CHECKS se23_gauss_check). */
+static se23_status_t rest_check(const se23_gauss_t *g)
+{
+#if SE23_CFG_DEEP_CHECKS
+    const se23_status_t st = se23_gauss_check(g);
+    if (st != SE23_OK) {
+        return st;
+    }
+#endif
+    return (se23_kalman_mean_in_range(g) != 0) ? SE23_OK : SE23_ERR_NONFINITE;
+}
+
+/* As se23_kalman_update: the covariance half's frame (its factors in wk)
+ * has returned before the retraction runs. */
+se23_status_t se23_kalman_rest(const se23_gauss_t *g, const se23_rest_meas_t *y,
+                               se23_kalman_work_t *wk, se23_gauss_t *out, se23_real_t *nis)
+{
+    se23_real_t dx[S], q;
+    se23_status_t st = rest_check(g);
+    if (st == SE23_OK) {
+        st = se23_kalman_rest_cov(g, y, wk, dx, &q, out->P.m);
     }
     if (st == SE23_OK) {
         update_finish(g, dx, q, out, nis);

@@ -473,6 +473,28 @@ static se23_real_t trace(const se23_real_t *P, int n)
     return (t0 + t1) + t2;
 }
 
+int se23_kalman_fits(const se23_real_t *P, int n, se23_real_t usq, se23_real_t q)
+{
+    /* |dx_i| = |U_i . w| <= (|U_i|^2 q)^(1/2) <= (usq q)^(1/2) (Cauchy-
+     * Schwarz); usq and tr P bound |U_i|^2 and P_ii (DIAG_MAX). A product
+     * that overflows fails the test, as NaN does. */
+    return se23_is_finite(q) && (usq <= DIAG_MAX) && (trace(P, n) <= DIAG_MAX) &&
+           (usq * q <= SE23_KALMAN_CORR_MAX * SE23_KALMAN_CORR_MAX);
+}
+
+int se23_kalman_mean_in_range(const se23_gauss_t *g)
+{
+    const se23_real_t *parts[4] = {g->T.v.v, g->T.p.v, g->b_g.v, g->b_a.v};
+    for (int k = 0; k < 4; ++k) {
+        for (int i = 0; i < 3; ++i) {
+            if (!(se23_fabs(parts[k][i]) <= SE23_KALMAN_MEAN_MAX)) {
+                return 0;
+            }
+        }
+    }
+    return 1;
+}
+
 se23_status_t se23_kalman_cov_work(const se23_gauss_t *g, const se23_meas_t *y,
                                    unsigned mask, se23_kalman_work_t *wk,
                                    se23_real_t *dx, se23_real_t *nis, se23_real_t *Pout)
@@ -497,11 +519,7 @@ se23_status_t se23_kalman_cov_work(const se23_gauss_t *g, const se23_meas_t *y,
         q = se23_fma(w[r], w[r], q);
     }
     solve_u(L, w, n, m, U, dx, &usq);
-    /* |dx_i| = |U_i . w| <= (|U_i|^2 q)^(1/2) <= (usq q)^(1/2) (Cauchy-
-     * Schwarz); usq and tr P bound |U_i|^2 and P_ii (DIAG_MAX). A product
-     * that overflows fails the test, as NaN does. */
-    if (!se23_is_finite(q) || !(usq <= DIAG_MAX) || !(trace(g->P.m, n) <= DIAG_MAX) ||
-        !(usq * q <= SE23_KALMAN_CORR_MAX * SE23_KALMAN_CORR_MAX)) {
+    if (se23_kalman_fits(g->P.m, n, usq, q) == 0) {
         return SE23_ERR_NONFINITE;
     }
     /* Nothing fails from here on; w is free once dx is formed. */

@@ -83,6 +83,19 @@ se23_status_t se23_kalman_cov(const se23_gauss_t *g, const se23_meas_t *y,
                               se23_real_t *Pout);
 
 /**
+ * Nonzero if an update of the n x n covariance P whose factor U has
+ * usq = sum_i |U_i|^2 and whose NIS is q keeps every result finite: q
+ * finite, usq and tr P at most a quarter of the largest real (then P -
+ * U U^T is finite), and usq q (the square of the bound on every |dx_k|) at
+ * most SE23_KALMAN_CORR_MAX^2. NaN fails.
+ */
+int se23_kalman_fits(const se23_real_t *P, int n, se23_real_t usq, se23_real_t q);
+
+/** Nonzero if every entry of g's mean (v, p, biases) is within
+ *  SE23_KALMAN_MEAN_MAX (NaN is not): the retraction cannot overflow. */
+int se23_kalman_mean_in_range(const se23_gauss_t *g);
+
+/**
  * The mean half: out's T = g's T exp(dx_xi) with R re-orthonormalised,
  * biases + dx_db (n = 15) or copied, n. Cannot fail for |dx_k| <=
  * SE23_KALMAN_CORR_MAX and mean entries within SE23_KALMAN_MEAN_MAX:
