@@ -121,7 +121,7 @@ static se23_ins_gnss_t ins_fix;
 #define INS_DT_NS 5000000LL /* 200 Hz */
 #define FEED 25             /* > the detector's window of 20 */
 
-static void ins_config(se23_ins_config_t *cfg, int zupt)
+static void ins_config(se23_ins_config_t *cfg, int zupt, se23_real_t zaru_after)
 {
     memset(cfg, 0, sizeof *cfg);
     cfg->noise = c.noise;
@@ -146,6 +146,7 @@ static void ins_config(se23_ins_config_t *cfg, int zupt)
     cfg->detector.threshold = SE23_R(12);
     cfg->zupt_sigma_v = SE23_R(0.01);
     cfg->zaru_sigma_w = SE23_R(1e-3);
+    cfg->zaru_after = zaru_after;
 }
 
 /* The readings of a body at rest with the filter's state: w = R^T Omega -
@@ -174,13 +175,13 @@ static se23_ins_verdict_t ins_next(int rest)
     return se23_ins_imu(&ins, ins_t_ns, ins_seq, &w, &f);
 }
 
-static void ins_prepare(int zupt, int rest)
+static void ins_prepare(int zupt, int rest, se23_real_t zaru_after)
 {
     se23_ins_config_t cfg;
     se23_gauss_t g;
     int k;
     setup();
-    ins_config(&cfg, zupt);
+    ins_config(&cfg, zupt, zaru_after);
     g = c.g15;
     if (rest != 0) {
         memset(&g.T.v, 0, sizeof g.T.v);
@@ -193,8 +194,12 @@ static void ins_prepare(int zupt, int rest)
         (void)ins_next(rest);
     }
 }
-static void prepare_ins_predict(void) { ins_prepare(0, 0); }
-static void prepare_ins_zupt(void) { ins_prepare(1, 1); }
+static void prepare_ins_predict(void) { ins_prepare(0, 0, SE23_R(0)); }
+/* ZARU from the first stationary sample on (zaru_after 0), or not within
+ * the feed (zaru_after 1 s: a walker's stance, ins.h "Zero-velocity
+ * updates"). */
+static void prepare_ins_zupt(void) { ins_prepare(1, 1, SE23_R(0)); }
+static void prepare_ins_zupt_only(void) { ins_prepare(1, 1, SE23_R(1)); }
 
 /* A fix at the state's time, a little off the antenna's position and
  * velocity (p + R l, v + R (w x l)). */
@@ -204,7 +209,7 @@ static void prepare_ins_gnss(void)
     se23_vec3_t w, wl;
     int64_t t_ns;
     int i, j;
-    ins_prepare(0, 0);
+    ins_prepare(0, 0, SE23_R(0));
     (void)se23_ins_state(&ins, &g, &t_ns);
     memset(&ins_fix, 0, sizeof ins_fix);
     ins_fix.t_ns = t_ns;
@@ -258,6 +263,8 @@ const bench_step_t bench_steps[] = {
      ins_predict},
     {"FILTER sample n=15 at rest, predict + rest tests + ZUPT + ZARU (se23_ins_imu)",
      prepare_ins_zupt, ins_zupt},
+    {"FILTER sample n=15 at rest, predict + rest tests + ZUPT, ZARU not due (se23_ins_imu)",
+     prepare_ins_zupt_only, ins_zupt},
     {"FILTER GNSS position + velocity fix now, lever arm, n=15 (se23_ins_gnss)", prepare_ins_gnss,
      ins_gnss},
 };
