@@ -131,7 +131,9 @@
  * sample applies v = 0 (nav frame, 1-sigma sqrt(zupt_sigma_v^2 + W
  * (zupt_lever |w|)^2), w = w_meas + b_g: a body at rest that still turns
  * at w about a point zupt_lever away, a foot rolling over its heel or toe,
- * moves at up to zupt_lever |w|, the same in the W samples of a window) and, with bias
+ * moves at up to zupt_lever |w|, the same in the W samples of a window;
+ * applied as the body-frame R^T v = 0, its information, in one update with
+ * the ZARU on the filter's own state, src/kalman_rest.c) and, with bias
  * states, once the rest has lasted zaru_after seconds, w_meas + b_g =
  * R^T Omega (the Earth rate a body at rest senses; zero on flat Earth;
  * 1-sigma zaru_sigma_w per axis, its O(|Omega| |phi|) dependence on the

@@ -29,7 +29,7 @@ check walk-import w_import
 # The preset has no floor: no level is ever set. Its detector finds the
 # stances (11,328 stationary samples measured; at least 10,000), and a rest
 # holds the position: the closure at the end is the last stance's within 3
-# cm (0.380 m against 0.361 m).
+# cm (0.378 m against 0.361 m).
 w_double() {
     w_run se23-ins double "$WVG" &&
         "$WB/se23-walk" --max-closure 0.45 --max-closure-nis 11.34 "$WW/double.log" \
