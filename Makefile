@@ -8,6 +8,7 @@
 #                (ns and callgrind instructions per call), routines;
 #                make bench-march: the same built for MARCH (x86-64-v3)
 #   make fuzz    libFuzzer targets (tests/fuzz), FUZZ_TIME seconds each
+#   make doc     the reference (Doxygen) into $(BUILD)/doc/html
 #   make clean   removes $(BUILD): the tree is then as cloned
 #
 # Firmware builds can instead compile src/*.c with include/ on their include
@@ -115,6 +116,7 @@ check: deps
 -include tools/bench.mk
 -include tools/paper.mk
 -include tools/accuracy/accuracy.mk
+-include tools/doc/doc.mk
 
 clean:
 	rm -rf $(BUILD)
