@@ -42,11 +42,13 @@
 #endif
 
 #ifndef SE23_CFG_ARG_CHECKS
+/** 1: NULL pointer arguments give SE23_ERR_NULL; 0: not checked (see above). */
 #define SE23_CFG_ARG_CHECKS 1
 #endif
 
 #ifndef SE23_CFG_ROT_TOL
 #if SE23_CFG_DOUBLE
+/** Largest |R^T R - I| entry and |det R - 1| accepted as a rotation. */
 #define SE23_CFG_ROT_TOL 1e-9
 #else
 #define SE23_CFG_ROT_TOL 1e-5f
@@ -54,11 +56,13 @@
 #endif
 
 #ifndef SE23_CFG_DT_MAX
+/** Largest IMU sample interval [s] the propagation accepts. */
 #define SE23_CFG_DT_MAX 1.0
 #endif
 
 #ifndef SE23_CFG_COV_TOL
 #if SE23_CFG_DOUBLE
+/** Relative tolerance of the covariance checks (symmetry, PSD; gauss.h). */
 #define SE23_CFG_COV_TOL 1e-9
 #else
 #define SE23_CFG_COV_TOL 1e-5f
@@ -66,6 +70,7 @@
 #endif
 
 #ifndef SE23_CFG_DEEP_CHECKS
+/** 1: every call re-proves the state it is handed (O(n^3)); 0: trusted. */
 #define SE23_CFG_DEEP_CHECKS 0
 #endif
 

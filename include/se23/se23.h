@@ -32,29 +32,60 @@
 extern "C" {
 #endif
 
-/** T = identity (I, 0, 0). */
+/**
+ * T = identity (I, 0, 0).
+ * @param T out: the identity pose
+ */
 void se23_identity(se23_pose_t *T);
 
-/** AB = A B (matrix product of the 5x5 forms). */
+/**
+ * AB = A B (matrix product of the 5x5 forms).
+ * @param A left factor
+ * @param B right factor
+ * @param AB out: the product; may alias A or B
+ */
 void se23_compose(const se23_pose_t *A, const se23_pose_t *B, se23_pose_t *AB);
 
-/** Tinv = T^-1 = (R^T, -R^T v, -R^T p). */
+/**
+ * Tinv = T^-1 = (R^T, -R^T v, -R^T p).
+ * @param T the pose
+ * @param Tinv out: its inverse; may alias T
+ */
 void se23_inverse(const se23_pose_t *T, se23_pose_t *Tinv);
 
-/** y = R x + p: the action of the pose (R, p) part on a point x. */
+/**
+ * y = R x + p: the action of the pose (R, p) part on a point x.
+ * @param T the pose (its R and p are used)
+ * @param x the point
+ * @param y out: R x + p; may alias x
+ */
 void se23_act(const se23_pose_t *T, const se23_vec3_t *x, se23_vec3_t *y);
 
-/** X = xi^ in se_2(3) as a 5x5 matrix. */
+/**
+ * X = xi^ in se_2(3) as a 5x5 matrix.
+ * @param xi tangent vector (phi, nu, rho)
+ * @param X out: its 5x5 Lie-algebra matrix
+ */
 void se23_hat(const se23_tangent_t *xi, se23_mat5_t *X);
 
-/** xi = vee(X); reads the skew part of the 3x3 block and columns 3 and 4. */
+/**
+ * xi = vee(X); reads the skew part of the 3x3 block and columns 3 and 4.
+ * @param X a 5x5 Lie-algebra matrix
+ * @param xi out: its tangent vector (phi, nu, rho)
+ */
 void se23_vee(const se23_mat5_t *X, se23_tangent_t *xi);
 
-/** M = the 5x5 matrix of T. */
+/**
+ * M = the 5x5 matrix of T.
+ * @param T the pose
+ * @param M out: its 5x5 matrix
+ */
 void se23_to_mat5(const se23_pose_t *T, se23_mat5_t *M);
 
 /**
  * T = the pose held in a 5x5 matrix.
+ * @param M a 5x5 matrix of an extended pose
+ * @param T out: the pose (written only on SE23_OK)
  * @return SE23_ERR_NONFINITE, SE23_ERR_NOT_ROTATION (block), or SE23_ERR_DOMAIN
  *         if the last two rows differ from [0 0 0 1 0; 0 0 0 0 1] by more
  *         than SE23_CFG_ROT_TOL.
@@ -64,6 +95,8 @@ se23_status_t se23_from_mat5(const se23_mat5_t *M, se23_pose_t *T);
 /**
  * T = exp(xi) = (exp(phi^), J_l(phi) nu, J_l(phi) rho)  (paper eq. exp:map,
  * with N(omega) = J_l(phi); see DESIGN.md section 3 for the printed typo).
+ * @param xi tangent vector (phi, nu, rho)
+ * @param T out: exp(xi) (written only on SE23_OK)
  * @return SE23_ERR_NONFINITE if xi holds NaN/Inf or the result overflows.
  */
 se23_status_t se23_exp(const se23_tangent_t *xi, se23_pose_t *T);
@@ -71,6 +104,8 @@ se23_status_t se23_exp(const se23_tangent_t *xi, se23_pose_t *T);
 /**
  * xi = log(T) = (phi, J_l(phi)^-1 v, J_l(phi)^-1 p) with phi = log(R) the
  * principal rotation logarithm (|phi| <= pi).
+ * @param T the pose
+ * @param xi out: log(T) (written only on SE23_OK)
  * @return SE23_ERR_NONFINITE (NaN/Inf in T, or xi would overflow: v or p
  *         near the largest real), or SE23_ERR_NOT_ROTATION.
  */
@@ -79,17 +114,22 @@ se23_status_t se23_log(const se23_pose_t *T, se23_tangent_t *xi);
 /**
  * Ad = Ad_T = [[R, 0, 0], [v^ R, R, 0], [p^ R, 0, R]]  (paper eq. ad:eq),
  * so that T exp(xi) T^-1 = exp(Ad_T xi).
+ * @param T the pose
+ * @param Ad out: Ad_T, 9x9 row-major
  */
 void se23_adjoint(const se23_pose_t *T, se23_mat9_t *Ad);
 
 /**
  * Ad = Ad_{T^-1} = [[R^T, 0, 0], [-R^T v^, R^T, 0], [-R^T p^, 0, R^T]],
  * computed directly (no inversion of T or of Ad_T).
+ * @param T the pose
+ * @param Ad out: Ad_{T^-1}, 9x9 row-major
  */
 void se23_adjoint_inv(const se23_pose_t *T, se23_mat9_t *Ad);
 
 /**
  * Checks that T is finite and its R is a rotation within SE23_CFG_ROT_TOL.
+ * @param T the pose to check
  * @return SE23_OK, SE23_ERR_NONFINITE or SE23_ERR_NOT_ROTATION.
  */
 se23_status_t se23_pose_check(const se23_pose_t *T);

@@ -20,9 +20,9 @@ extern "C" {
 #endif
 
 #if SE23_CFG_DOUBLE
-typedef double se23_real_t;
+typedef double se23_real_t; /**< the scalar: double (SE23_CFG_DOUBLE 1) or float (0) */
 #else
-typedef float se23_real_t;
+typedef float se23_real_t; /**< the scalar: double (SE23_CFG_DOUBLE 1) or float (0) */
 #endif
 
 /** Literal of the configured precision: SE23_R(0.5) is 0.5f in the float build. */
@@ -30,27 +30,27 @@ typedef float se23_real_t;
 
 /** Column 3-vector. */
 typedef struct {
-    se23_real_t v[3];
+    se23_real_t v[3]; /**< x, y, z */
 } se23_vec3_t;
 
 /** 3x3 matrix, row-major. */
 typedef struct {
-    se23_real_t m[3][3];
+    se23_real_t m[3][3]; /**< m[row][column] */
 } se23_mat3_t;
 
 /** 5x5 matrix, row-major (the embedding of SE_2(3) and its Lie algebra). */
 typedef struct {
-    se23_real_t m[5][5];
+    se23_real_t m[5][5]; /**< m[row][column] */
 } se23_mat5_t;
 
 /** 9x9 matrix, flat row-major: element (i, j) is m[9*i + j]. */
 typedef struct {
-    se23_real_t m[81];
+    se23_real_t m[81]; /**< element (i, j) at m[9*i + j] */
 } se23_mat9_t;
 
 /** Element of R^9 = se_2(3) in the basis (phi, nu, rho). */
 typedef struct {
-    se23_real_t v[9];
+    se23_real_t v[9]; /**< phi (0-2), nu (3-5), rho (6-8) */
 } se23_tangent_t;
 
 /** First index of each block of a tangent vector. */
@@ -111,6 +111,7 @@ typedef enum {
 
 /**
  * Short constant name of a status, e.g. "SE23_ERR_DT".
+ * @param status the status
  * @return never NULL ("SE23_ERR_UNKNOWN" for a value that is not a status).
  */
 const char *se23_status_str(se23_status_t status);
