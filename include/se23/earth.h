@@ -53,8 +53,9 @@ extern "C" {
 #define SE23_WGS84_E2 0.00669437999013         /**< first eccentricity squared */
 #define SE23_WGS84_M 0.00344978650684          /**< w^2 a^2 b / GM */
 
-/** Heights [m] accepted by se23_earth_gravity (the series in h is second order). */
+/** Lowest height [m] se23_earth_gravity accepts (its series in h is second order). */
 #define SE23_EARTH_H_MIN (-1.0e4)
+/** Highest height [m] se23_earth_gravity accepts. */
 #define SE23_EARTH_H_MAX 1.0e5
 /** Slack [rad] on |lat| <= pi/2, for latitudes converted from degrees. */
 #define SE23_EARTH_LAT_SLACK 1e-6
@@ -84,6 +85,9 @@ typedef struct {
  *   g0 = gamma_e (1 + k sin^2 lat) / sqrt(1 - e^2 sin^2 lat),
  * and the second-order height correction (TR8350.2 eq. 4-3)
  *   g = g0 (1 - 2/a (1 + f + m - 2 f sin^2 lat) h + 3 h^2 / a^2).
+ * @param lat geodetic latitude [rad]
+ * @param h ellipsoidal height [m]
+ * @param g out: normal gravity [m/s^2] (written only on SE23_OK)
  * @return SE23_ERR_NONFINITE, or SE23_ERR_DOMAIN if |lat| > pi/2 (plus
  *         SE23_EARTH_LAT_SLACK) or h is outside [SE23_EARTH_H_MIN, SE23_EARTH_H_MAX].
  */
@@ -92,6 +96,10 @@ se23_status_t se23_earth_gravity(se23_real_t lat, se23_real_t h, se23_real_t *g)
 /**
  * g_n = the normal gravity vector in the nav frame: (0, 0, g) in NED,
  * (0, 0, -g) in ENU, g from se23_earth_gravity.
+ * @param frame the nav frame's axes
+ * @param lat geodetic latitude [rad]
+ * @param h ellipsoidal height [m]
+ * @param g_n out: the gravity vector (written only on SE23_OK)
  * @return as se23_earth_gravity, or SE23_ERR_DOMAIN for an unknown frame.
  */
 se23_status_t se23_earth_gravity_vec(se23_frame_t frame, se23_real_t lat,
@@ -101,6 +109,9 @@ se23_status_t se23_earth_gravity_vec(se23_frame_t frame, se23_real_t lat,
  * w_ie_n = the Earth rate [rad/s] in the nav frame at latitude lat [rad]:
  * w_e (cos lat, 0, -sin lat) in NED, w_e (0, cos lat, sin lat) in ENU,
  * w_e = SE23_WGS84_OMEGA_E.
+ * @param frame the nav frame's axes
+ * @param lat geodetic latitude [rad]
+ * @param w_ie_n out: the Earth rate (written only on SE23_OK)
  * @return SE23_ERR_NONFINITE, or SE23_ERR_DOMAIN for |lat| > pi/2 (plus
  *         slack) or an unknown frame.
  */
@@ -117,6 +128,7 @@ se23_status_t se23_earth_rate(se23_frame_t frame, se23_real_t lat,
  * @param g_n    gravity in the nav frame [m/s^2]
  * @param w_ie_n Earth rate in the nav frame [rad/s]
  * @param t      time [s], t >= 0
+ * @param gamma out: Gamma'(t) (written only on SE23_OK)
  * @return SE23_ERR_NONFINITE if an input holds NaN/Inf or Gamma overflows,
  *         SE23_ERR_DT if t < 0.
  */
@@ -130,6 +142,7 @@ se23_status_t se23_earth_gamma(const se23_vec3_t *g_n, const se23_vec3_t *w_ie_n
  * @param dt     nominal sample interval [s], 0 < dt <= dt_max
  * @param dt_max largest interval a step will accept [s] (a longer gap between
  *               samples is refused with SE23_ERR_DT), dt_max <= SE23_CFG_DT_MAX
+ * @param model out: the model (written only on SE23_OK)
  * @return SE23_ERR_NONFINITE, or SE23_ERR_DT if the intervals break
  *         0 < dt <= dt_max <= SE23_CFG_DT_MAX.
  */
@@ -141,6 +154,12 @@ se23_status_t se23_earth_model_init(const se23_vec3_t *g_n,
 /**
  * model = se23_earth_model_init with WGS-84 normal gravity at (lat [rad], h [m])
  * and the Earth rate at lat, in the given frame.
+ * @param frame the nav frame's axes
+ * @param lat geodetic latitude of the frame's origin [rad]
+ * @param h its ellipsoidal height [m]
+ * @param dt nominal sample interval [s]
+ * @param dt_max largest interval a step will accept [s]
+ * @param model out: the model (written only on SE23_OK)
  * @return the statuses of se23_earth_gravity_vec and se23_earth_model_init.
  */
 se23_status_t se23_earth_model_init_wgs84(se23_frame_t frame, se23_real_t lat,

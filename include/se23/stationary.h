@@ -132,6 +132,8 @@ typedef struct {
 /**
  * d = an empty detector with configuration cfg (every field of d written;
  * the sample buffers zeroed).
+ * @param cfg the configuration
+ * @param d out: the detector (written only on SE23_OK)
  * @return SE23_ERR_NULL; SE23_ERR_NONFINITE if a real of cfg is NaN or Inf;
  *         SE23_ERR_DIM unless 2 <= cfg->window <= SE23_STATIONARY_WMAX;
  *         SE23_ERR_DOMAIN unless sigma_a, sigma_g > 0 with sigma^2 and
@@ -160,15 +162,21 @@ se23_status_t se23_stationary_init(const se23_stationary_config_t *cfg,
 se23_status_t se23_stationary_add(se23_stationary_t *d, const se23_vec3_t *w_b,
                                   const se23_vec3_t *f_b, int *stationary);
 
-/** Empties the window (count, head, fbar, stat, stationary and the running
- *  sums = 0); keeps d->cfg. The stored samples are not read again before
- *  they are overwritten. */
+/**
+ * Empties the window (count, head, fbar, stat, stationary and the running
+ * sums = 0); keeps d->cfg. The stored samples are not read again before
+ * they are overwritten.
+ * @param d the detector
+ */
 void se23_stationary_reset(se23_stationary_t *d);
 
 /**
  * w_mean, f_mean = the means of the W samples of the full window, the
  * inputs of static alignment (align.h; N = W samples averaged), from the
  * running sums: f_mean is d->fbar, the fbar of d->stat.
+ * @param d a detector with a full window
+ * @param w_mean out: the gyro mean [rad/s] (written only on SE23_OK)
+ * @param f_mean out: the specific-force mean [m/s^2] (written only on SE23_OK)
  * @return SE23_ERR_NULL; SE23_ERR_DIM if the window is not full (or the
  *         state's window or count is out of range); SE23_ERR_NONFINITE if
  *         a mean overflows.
@@ -182,6 +190,9 @@ se23_status_t se23_stationary_mean(const se23_stationary_t *d,
  * cancellation). At rest, sqrt(f_var_i) estimates sigma_a (and the
  * sigma_f of se23_align_cov) and sqrt(w_var_i) estimates sigma_g, both
  * including vibration and quantisation.
+ * @param d a detector with a full window
+ * @param w_var out: the gyro variances [(rad/s)^2] (written only on SE23_OK)
+ * @param f_var out: the specific-force variances [(m/s^2)^2] (written only on SE23_OK)
  * @return as se23_stationary_mean.
  */
 se23_status_t se23_stationary_var(const se23_stationary_t *d,
