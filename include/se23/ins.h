@@ -308,24 +308,37 @@ typedef enum {
  *  gnss_pending_dropped); a call the library refuses (SE23_INS_FAILED) in
  *  imu_failed / gnss_failed (none with a NULL filter). */
 typedef struct {
-    uint32_t imu_used, imu_early, imu_align, imu_nonfinite, imu_range, imu_duplicate;
-    uint32_t imu_out_of_order, imu_bad_time, imu_bad_dt;
+    uint32_t imu_used;         /**< samples integrated */
+    uint32_t imu_early;        /**< no state yet (before init, or aligning) */
+    uint32_t imu_align;        /**< taken by the alignment */
+    uint32_t imu_nonfinite;    /**< NaN/Inf in a reading */
+    uint32_t imu_range;        /**< an axis beyond the sensor range */
+    uint32_t imu_duplicate;    /**< not after the last in time, with its seq */
+    uint32_t imu_out_of_order; /**< not after the last in time, with an older seq */
+    uint32_t imu_bad_time;     /**< t or seq negative, or otherwise not after the last ("Clock") */
+    uint32_t imu_bad_dt;       /**< an interval beyond max_gap ("Outage") */
     uint32_t imu_failed;    /**< refused: a NULL reading, or a failed step (that
                              *   also in filter_errors); state kept */
     uint32_t imu_missing;   /**< samples lost in transit (seq gaps) */
     uint32_t imu_seq_jumps; /**< seq jumps too large to be losses */
-    uint32_t gnss_used;
+    uint32_t gnss_used;        /**< fixes fused */
     uint32_t gnss_delayed; /**< of gnss_used: fused late, by replay */
     uint32_t gnss_pending_dropped; /**< held fixes never fused ("GNSS") */
-    uint32_t gnss_nonfinite;
-    uint32_t gnss_early, gnss_stale, gnss_gated, gate_resets;
+    uint32_t gnss_nonfinite;   /**< NaN/Inf, a time, sigma or value out of bounds */
+    uint32_t gnss_early;       /**< before the first state */
+    uint32_t gnss_stale;       /**< beyond the horizon, or not after the last fused fix */
+    uint32_t gnss_gated;       /**< refused by the chi-square gate */
+    uint32_t gate_resets;      /**< of gnss_gated: position and velocity reset to the fix */
     uint32_t gnss_failed;   /**< refused: a NULL fix, or a failed update (that
                              *   also in filter_errors); state kept */
     uint32_t course_headings;  /**< headings set from the GNSS course */
-    uint32_t zupt_used, zaru_used;
+    uint32_t zupt_used;        /**< zero-velocity updates applied */
+    uint32_t zaru_used;        /**< zero-rate updates applied */
     uint32_t floor_used;       /**< floor updates applied (one per stance) */
     uint32_t floor_levels;     /**< floor levels set: the first stance, then each new one */
-    uint32_t time_resets, filter_errors, init_rejected;
+    uint32_t time_resets;      /**< clock steps, back or forward ("Clock", "Outage") */
+    uint32_t filter_errors;    /**< library steps that failed (state kept) */
+    uint32_t init_rejected;    /**< refused initial states and alignment requests */
 } se23_ins_counters_t;
 
 /** Sensor errors that grow with the motion ("Motion noise"). */
@@ -515,6 +528,8 @@ typedef struct {
  * The chi^2_{6W-2} quantile / W of stationary.h for the standard normal
  * quantile z (Wilson-Hilferty): the detector threshold at which a window at
  * rest is called moving with the probability 1 - Phi(z).
+ * @param window the detector window W [samples]
+ * @param z the standard normal quantile of the false-"moving" probability (2.326 for 1 %)
  * @return the threshold; no checks (window >= 1 and a moderate z are the
  *         caller's: e.g. z = 2.326 for one window in 100).
  */
@@ -528,6 +543,10 @@ se23_real_t se23_ins_detector_threshold(int window, se23_real_t z);
  * src/ins_preset.c. Pass cfg to se23_ins_setup and align to se23_ins_align:
  * a configuration the preset returns always passes se23_ins_setup (both
  * judge lat by se23_earth_gravity's rule).
+ * @param rate_hz the IMU rate [Hz], 50 to 10,000 (measure it: se23-import)
+ * @param lat latitude [rad], for gravity
+ * @param cfg out: the filter configuration (written only on SE23_OK)
+ * @param align out: the alignment request (written only on SE23_OK)
  * @return SE23_ERR_NULL; SE23_ERR_DOMAIN unless 50 <= rate_hz <= 10000;
  *         the statuses of se23_earth_gravity (lat: SE23_ERR_DOMAIN if
  *         |lat| > pi/2 + SE23_EARTH_LAT_SLACK). Nothing is written on
@@ -538,6 +557,8 @@ se23_status_t se23_ins_preset_foot(se23_real_t rate_hz, se23_real_t lat,
 
 /**
  * ins = an empty filter (no state) for cfg.
+ * @param cfg the configuration, copied
+ * @param ins out: an empty filter (written only on SE23_OK)
  * @return SE23_ERR_NULL; SE23_ERR_NONFINITE (a non-finite field);
  *         SE23_ERR_DOMAIN (a negative noise, range, sigma or gate;
  *         max_outage above SE23_INS_MAX_OUTAGE; accel_range above
@@ -564,6 +585,9 @@ se23_status_t se23_ins_setup(const se23_ins_config_t *cfg, se23_ins_t *ins);
  * positive semidefinite, mirrored (the check accepts an asymmetry within
  * its tolerance).
  * A pending fix is dropped (gnss_pending_dropped).
+ * @param ins a filter from se23_ins_setup
+ * @param t_ns time of the state [ns], >= 0
+ * @param g the user's state (R, v, p, biases) and its covariance
  * @return SE23_ERR_NULL, SE23_ERR_DIM (n), SE23_ERR_DT (t_ns < 0), the
  *         statuses of se23_gauss_check, SE23_ERR_DOMAIN (a variance above
  *         SE23_INS_P_MAX, |b_g| above gyro_range, |b_a| above accel_range,
@@ -576,6 +600,8 @@ se23_status_t se23_ins_init(se23_ins_t *ins, int64_t t_ns, const se23_gauss_t *g
  * Starts a static alignment (file comment): the state is set once the
  * detector has seen a->duration seconds (at least a window) of rest. A
  * pending fix is dropped (gnss_pending_dropped).
+ * @param ins a filter from se23_ins_setup
+ * @param a the alignment request, copied
  * @return SE23_ERR_NULL; SE23_ERR_DOMAIN (detector off in the
  *         configuration, gyrocompass on flat Earth, a sigma <= 0 or above
  *         1e6, duration < 0 or above SE23_INS_MAX_OUTAGE, course_speed < 0,
@@ -589,6 +615,11 @@ se23_status_t se23_ins_align(se23_ins_t *ins, const se23_ins_align_t *a);
 /**
  * One raw IMU sample (gyro w_b [rad/s], specific force f_b [m/s^2]),
  * screened, then integrated (file comment).
+ * @param ins the filter
+ * @param t_ns time of the sample, the end of the interval it covers [ns]
+ * @param seq its sequence number (+1 per sample; a gap counts lost samples)
+ * @param w_b angular rate, body frame [rad/s]
+ * @param f_b specific force, body frame [m/s^2]
  * @return SE23_INS_USED; or what became of it: SE23_INS_EARLY,
  *         SE23_INS_NONFINITE, SE23_INS_RANGE, SE23_INS_DUPLICATE,
  *         SE23_INS_OUT_OF_ORDER, SE23_INS_BAD_TIME (also t_ns < 0,
@@ -602,6 +633,8 @@ se23_ins_verdict_t se23_ins_imu(se23_ins_t *ins, int64_t t_ns, int64_t seq,
 
 /**
  * One GNSS fix (file comment, "GNSS").
+ * @param ins the filter
+ * @param fix the fix, stamped with the time it refers to
  * @return SE23_INS_USED (fused now or at its own time), SE23_INS_PENDING
  *         (ahead of the state: held), SE23_INS_RESET (gate recovery);
  *         SE23_INS_EARLY, SE23_INS_NONFINITE (NaN/Inf, t_ns < 0, a sigma
@@ -616,6 +649,9 @@ se23_ins_verdict_t se23_ins_gnss(se23_ins_t *ins, const se23_ins_gnss_t *fix);
 
 /**
  * out = the user's state (R, v, p, biases, covariance); t_ns its time.
+ * @param ins the filter
+ * @param out out: the state (written only on SE23_OK)
+ * @param t_ns out: its time [ns] (written only on SE23_OK)
  * @return SE23_ERR_DIM before the first state; the status of
  *         se23_gauss_check if the state the filter holds fails it (every
  *         update is checked before it is kept, but a covariance step is
@@ -630,6 +666,8 @@ se23_status_t se23_ins_state(const se23_ins_t *ins, se23_gauss_t *out, int64_t *
 
 /**
  * Takes the finished preintegrated factor, if any.
+ * @param ins the filter
+ * @param out out: the factor (written only when 1 is returned)
  * @return 1 (out written), or 0 (none ready, or a NULL argument).
  */
 int se23_ins_take_factor(se23_ins_t *ins, se23_ins_factor_t *out);
