@@ -89,12 +89,12 @@ enum {
 
 /** Up to 15x15 matrix, flat row-major with stride 15: (i, j) is m[15*i + j]. */
 typedef struct {
-    se23_real_t m[SE23_GAUSS_NMAX * SE23_GAUSS_NMAX];
+    se23_real_t m[SE23_GAUSS_NMAX * SE23_GAUSS_NMAX]; /**< (i, j) at m[15*i + j] */
 } se23_mat15_t;
 
 /** 9x6 matrix, flat row-major: (i, j) is m[6*i + j]. */
 typedef struct {
-    se23_real_t m[54];
+    se23_real_t m[54]; /**< (i, j) at m[6*i + j] */
 } se23_mat9x6_t;
 
 /** IMU noise model: white-noise densities and bias random walks. */

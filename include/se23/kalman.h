@@ -107,6 +107,8 @@ typedef struct {
  * out = g updated with the measurement y (file comment).
  * @param g   the state, trusted (produced by the library or checked once
  *            with se23_gauss_check); only g->n is checked.
+ * @param y   the measurement model (a se23_meas_* result)
+ * @param out out: the updated state (written only on SE23_OK); may alias g
  * @param nis if not NULL, receives the normalised innovation squared
  *            z^T S^-1 z (chi^2 with m degrees of freedom for a consistent
  *            filter; use it to gate outliers).
@@ -134,6 +136,11 @@ se23_status_t se23_kalman_update(const se23_gauss_t *g, const se23_meas_t *y,
  * instead of on the stack: the same statuses and the same results, bit
  * for bit. w is scratch (unspecified after the call) and must not overlap
  * another argument.
+ * @param g   the state, as in se23_kalman_update
+ * @param y   the measurement model
+ * @param w   the work area (scratch)
+ * @param out out: the updated state (written only on SE23_OK); may alias g
+ * @param nis if not NULL, receives the NIS
  * @return the statuses of se23_kalman_update; SE23_ERR_NULL also for a
  *         NULL w. On error nothing is written (out, nis).
  */
@@ -149,6 +156,7 @@ se23_status_t se23_kalman_update_work(const se23_gauss_t *g, const se23_meas_t *
  * @param p_n    measured position, nav frame [m]
  * @param lever_b antenna position in the body frame [m] (zero vector if none)
  * @param cov    measurement noise covariance [m^2]
+ * @param y      out: the measurement model (written only on SE23_OK)
  * @return SE23_ERR_NONFINITE (an input holds NaN or Inf, or the residual
  *         or an entry of H would overflow), SE23_ERR_NOT_ROTATION (T), or
  *         the covariance statuses of gauss.h for cov. On error y is not
@@ -160,8 +168,10 @@ se23_status_t se23_meas_pos_nav(const se23_pose_t *T, const se23_vec3_t *p_n,
 
 /**
  * y = the velocity measured in the nav frame: h(T) = v, H = [0, R, 0, 0].
+ * @param T   estimate Tbar
  * @param v_n measured velocity, nav frame [m/s]
  * @param cov measurement noise covariance [m^2/s^2]
+ * @param y   out: the measurement model (written only on SE23_OK)
  * @return as se23_meas_pos_nav.
  */
 se23_status_t se23_meas_vel_nav(const se23_pose_t *T, const se23_vec3_t *v_n,
@@ -196,6 +206,7 @@ se23_status_t se23_meas_vel_nav(const se23_pose_t *T, const se23_vec3_t *v_n,
  * @param cov     measurement noise covariance [m^2/s^2] (include the gyro
  *                noise mapped through the lever, |l_b|^2 sigma_w^2, if it
  *                matters)
+ * @param y       out: the measurement model (written only on SE23_OK)
  * @return as se23_meas_pos_nav.
  */
 se23_status_t se23_meas_vel_nav_lever(const se23_pose_t *T,
@@ -207,8 +218,10 @@ se23_status_t se23_meas_vel_nav_lever(const se23_pose_t *T,
 /**
  * y = the velocity measured in the body frame (zero-velocity update with
  * v_b = 0, or an odometer): h(T) = R^T v, H = [(R^T v)^, I, 0, 0].
+ * @param T   estimate Tbar
  * @param v_b measured velocity, body frame [m/s]
  * @param cov measurement noise covariance [m^2/s^2]
+ * @param y   out: the measurement model (written only on SE23_OK)
  * @return as se23_meas_pos_nav.
  */
 se23_status_t se23_meas_vel_body(const se23_pose_t *T, const se23_vec3_t *v_b,
@@ -235,6 +248,7 @@ se23_status_t se23_meas_vel_body(const se23_pose_t *T, const se23_vec3_t *v_b,
  *               rest interval; then scale cov accordingly)
  * @param b_g    the gyro bias estimate bbar_g [rad/s] (g->b_g)
  * @param cov    noise covariance of the rate [rad^2/s^2]
+ * @param y      out: the measurement model (written only on SE23_OK)
  * @return SE23_ERR_NONFINITE (an input holds NaN or Inf, or w_meas + b_g
  *         would overflow), or the covariance statuses of gauss.h for cov.
  *         On error y is not written.
