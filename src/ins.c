@@ -71,26 +71,31 @@ static int is_flag(int x)
 /* The statuses of se23_ins_setup for cfg, SE23_OK if it is usable. */
 static se23_status_t config_check(const se23_ins_config_t *cfg)
 {
+    /* magnitudes (>= 0), then the signed values (lat is judged by
+     * se23_earth_gravity_vec in se23_ins_setup, the rule (earth.h: |lat| <=
+     * pi/2 + SE23_EARTH_LAT_SLACK) se23_ins_preset_foot applies too) */
     const se23_real_t reals[] = {
         cfg->noise.gyro_noise, cfg->noise.accel_noise, cfg->noise.gyro_walk,
-        cfg->noise.accel_walk, cfg->gyro_range, cfg->accel_range, cfg->lat,
+        cfg->noise.accel_walk, cfg->gyro_range, cfg->accel_range,
         cfg->dt_nominal, cfg->max_gap, cfg->max_outage, cfg->outage_accel,
-        cfg->outage_rate, cfg->lever_b.v[0], cfg->lever_b.v[1], cfg->lever_b.v[2],
-        cfg->gnss_gate, cfg->delay_horizon, cfg->preint_window, cfg->zupt_sigma_v,
-        cfg->zaru_sigma_w, cfg->zaru_after, cfg->floor_sigma, cfg->floor_step,
-        cfg->floor_swing, cfg->motion.gyro_scale, cfg->motion.accel_scale, cfg->motion.gyro_g,
-        cfg->motion.corr_time, cfg->zupt_lever};
-    const size_t n_bytes = sizeof reals;
+        cfg->outage_rate, cfg->gnss_gate, cfg->delay_horizon, cfg->preint_window,
+        cfg->zupt_sigma_v, cfg->zaru_sigma_w, cfg->zaru_after, cfg->floor_sigma,
+        cfg->floor_step, cfg->floor_swing, cfg->motion.gyro_scale, cfg->motion.accel_scale,
+        cfg->motion.gyro_g, cfg->motion.corr_time, cfg->zupt_lever, cfg->nhc_sigma,
+        cfg->nhc_interval, cfg->rest_speed_max};
+    const se23_real_t signed_reals[] = {
+        cfg->lat, cfg->lever_b.v[0], cfg->lever_b.v[1], cfg->lever_b.v[2],
+        cfg->mount_bv.v[0], cfg->mount_bv.v[1], cfg->mount_bv.v[2], cfg->gnss_time_offset};
+    const size_t n_bytes = sizeof reals, n_signed_bytes = sizeof signed_reals;
     const int n_reals = (int)n_bytes / (int)sizeof reals[0];
     int i;
-    if (se23_all_finite(reals, n_reals) == 0) {
+    if ((se23_all_finite(reals, n_reals) == 0) ||
+        (se23_all_finite(signed_reals, (int)n_signed_bytes / (int)sizeof signed_reals[0]) ==
+         0)) {
         return SE23_ERR_NONFINITE;
     }
-    /* every real but lat and the lever arm is a magnitude; lat is judged
-     * by se23_earth_gravity_vec in se23_ins_setup, the rule (earth.h: |lat|
-     * <= pi/2 + SE23_EARTH_LAT_SLACK) se23_ins_preset_foot applies too */
     for (i = 0; i < n_reals; ++i) {
-        if ((i != 6) && ((i < 12) || (i > 14)) && (reals[i] < SE23_R(0))) {
+        if (reals[i] < SE23_R(0)) {
             return SE23_ERR_DOMAIN;
         }
     }
@@ -110,6 +115,15 @@ static se23_status_t config_check(const se23_ins_config_t *cfg)
     if ((cfg->motion.gyro_scale > SE23_R(1)) || (cfg->motion.accel_scale > SE23_R(1)) ||
         (cfg->motion.gyro_g > SE23_R(1)) || (cfg->motion.corr_time > SE23_R(1)) ||
         (cfg->zupt_lever > SE23_R(1))) {
+        return SE23_ERR_DOMAIN;
+    }
+    /* a mounting within one turn, an NHC update
+     * at least once a minute, a GNSS clock within a second of the IMU's */
+    if ((se23_v3_dot(&cfg->mount_bv, &cfg->mount_bv) > (SE23_R(4) * (SE23_PI * SE23_PI))) ||
+        (cfg->nhc_sigma > SE23_MEAS_NHC_SIGMA_MAX) || (cfg->rest_speed_max > SE23_INS_VEL_MAX) ||
+        ((cfg->nhc_sigma > SE23_R(0)) &&
+         ((cfg->nhc_interval <= SE23_R(0)) || (cfg->nhc_interval > SE23_R(60)))) ||
+        (se23_fabs(cfg->gnss_time_offset) > SE23_R(1))) {
         return SE23_ERR_DOMAIN;
     }
     if ((cfg->zupt != 0) && (cfg->zupt_sigma_v <= SE23_R(0))) {
@@ -135,6 +149,7 @@ se23_status_t se23_ins_setup(const se23_ins_config_t *cfg, se23_ins_t *ins)
 {
     const se23_vec3_t zero = {{SE23_R(0), SE23_R(0), SE23_R(0)}};
     se23_vec3_t g_n, w_ie_n;
+    se23_mat3_t C_bv;
     se23_earth_model_t model;
     se23_status_t st;
     SE23_CHECK_NOT_NULL(cfg);
@@ -151,6 +166,9 @@ se23_status_t se23_ins_setup(const se23_ins_config_t *cfg, se23_ins_t *ins)
     if (st == SE23_OK) {
         st = se23_earth_model_init(&g_n, (cfg->earth_rotation != 0) ? &w_ie_n : &zero,
                                    cfg->dt_nominal, SE23_CFG_DT_MAX, &model);
+    }
+    if (st == SE23_OK) {
+        st = se23_so3_exp(&cfg->mount_bv, &C_bv);
     }
     if ((st == SE23_OK) && (cfg->zupt != 0)) {
         st = se23_stationary_init(&cfg->detector, &ins->det); /* nothing written on error */
@@ -173,6 +191,9 @@ se23_status_t se23_ins_setup(const se23_ins_config_t *cfg, se23_ins_t *ins)
         ins->horizon_ns = to_ns(cfg->delay_horizon);
         ins->zaru_after_ns = to_ns(cfg->zaru_after);
         ins->floor_swing_ns = to_ns(cfg->floor_swing);
+        ins->nhc_interval_ns = to_ns(cfg->nhc_interval);
+        ins->gnss_offset_ns = to_ns(cfg->gnss_time_offset);
+        ins->C_bv = C_bv;
         ins->max_missing = (int64_t)per_gap + 1;
         ins->nis_last = SE23_R(0);
         ins->zupt_nis_last = SE23_R(0);
@@ -392,13 +413,16 @@ static se23_ins_verdict_t not_after(se23_ins_t *ins, int64_t t_ns, int64_t seq)
     return (clock_stepped_back(ins, t_ns, seq) != 0) ? SE23_INS_OUTAGE : SE23_INS_BAD_TIME;
 }
 
-/* A pending fix whose time the state has reached is fused. */
+static se23_ins_verdict_t fix_verdict(se23_ins_t *ins, const se23_ins_gnss_t *fix);
+
+/* A pending fix whose time the state has reached is fused (its time
+ * already on the IMU's clock). */
 static void service_pending(se23_ins_t *ins)
 {
     /* t_ns - half_ns: t_ns + half_ns can overflow near INT64_MAX */
     if ((ins->have_pending != 0) && (ins->pending.t_ns - ins->half_ns <= ins->t_ns)) {
         ins->have_pending = 0;
-        (void)se23_ins_gnss(ins, &ins->pending);
+        (void)fix_verdict(ins, &ins->pending);
     }
 }
 
@@ -543,17 +567,35 @@ static se23_ins_verdict_t judge_fix(se23_ins_t *ins, const se23_ins_gnss_t *fix)
     return v;
 }
 
-se23_ins_verdict_t se23_ins_gnss(se23_ins_t *ins, const se23_ins_gnss_t *fix)
+/* The verdict of a fix on the IMU's clock, a failure counted. */
+static se23_ins_verdict_t fix_verdict(se23_ins_t *ins, const se23_ins_gnss_t *fix)
 {
-    se23_ins_verdict_t v = SE23_INS_FAILED;
-    if (ins == NULL) {
-        return v;
-    }
-    if (fix != NULL) {
-        v = judge_fix(ins, fix);
-    }
+    const se23_ins_verdict_t v = judge_fix(ins, fix);
     if (v == SE23_INS_FAILED) {
         se23_ins_count(&ins->c.gnss_failed); /* a failed update: also in filter_errors */
     }
     return v;
+}
+
+se23_ins_verdict_t se23_ins_gnss(se23_ins_t *ins, const se23_ins_gnss_t *fix)
+{
+    se23_ins_gnss_t on_imu_clock;
+    if (ins == NULL) {
+        return SE23_INS_FAILED;
+    }
+    if (fix == NULL) {
+        se23_ins_count(&ins->c.gnss_failed);
+        return SE23_INS_FAILED;
+    }
+    on_imu_clock = *fix;
+    /* t + offset, |offset| <= 1 s: only a time within a second of
+     * INT64_MAX can overflow; a negative time, before or after the
+     * offset, fix_valid refuses */
+    if ((fix->t_ns < 0) ||
+        ((ins->gnss_offset_ns > 0) && (fix->t_ns > INT64_MAX - ins->gnss_offset_ns))) {
+        on_imu_clock.t_ns = -1;
+    } else {
+        on_imu_clock.t_ns = fix->t_ns + ins->gnss_offset_ns;
+    }
+    return fix_verdict(ins, &on_imu_clock);
 }

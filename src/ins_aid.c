@@ -1,5 +1,6 @@
 /* The navigation filter's measurement updates: zero velocity and rate at
- * rest, the floor level at stances, GNSS with its gate and gate recovery;
+ * rest, the floor level at stances, a vehicle's non-holonomic constraint,
+ * GNSS with its gate and gate recovery;
  * see ins.h. Every update runs on the user's (R, v, p) in ins->work and is
  * committed to the state only when it succeeded (and passed the gate). */
 #include "ins_internal.h"
@@ -238,6 +239,29 @@ int se23_ins_zupt(se23_ins_t *ins, const se23_imu_sample_t *s, int rest)
     } else {
         /* no stance began */
     }
+    return 1;
+}
+
+int se23_ins_nhc(se23_ins_t *ins)
+{
+    se23_status_t st = user_state(ins);
+    if (st == SE23_OK) {
+        st = se23_meas_nhc(&ins->work.T, &ins->C_bv, ins->cfg.nhc_sigma, &ins->meas);
+    }
+    if (st == SE23_OK) {
+        st = update_work(ins, NULL);
+    }
+    if (st == SE23_OK) {
+        st = commit(ins);
+    }
+    if (ins->replaying != 0) {
+        return (st == SE23_OK) ? 1 : 0; /* counted when it was first applied */
+    }
+    if (st != SE23_OK) {
+        se23_ins_count(&ins->c.filter_errors);
+        return 0;
+    }
+    se23_ins_count(&ins->c.nhc_used);
     return 1;
 }
 

@@ -275,13 +275,21 @@ void se23_ins_course_heading(se23_ins_t *ins, const se23_ins_gnss_t *fix, se23_r
     const se23_real_t sv = se23_fabs(fix->sigma_v.v[0]) + se23_fabs(fix->sigma_v.v[1]);
     const se23_real_t sh = SE23_R(0.5) * sv / speed;
     const se23_real_t s2 = (ins->align.course_sigma * ins->align.course_sigma) + (sh * sh);
+    int i;
+    /* the vehicle's forward axis in the nav frame, R C_bv e_1 (ins.h,
+     * "Vehicles"), turned onto the course */
+    se23_vec3_t fwd_b, fwd_n;
+    for (i = 0; i < 3; ++i) {
+        fwd_b.v[i] = ins->C_bv.m[i][0];
+    }
+    se23_m3_mul_v3(&g->T.R, &fwd_b, &fwd_n);
     const se23_real_t d = se23_atan2(fix->v_n.v[1], fix->v_n.v[0]) -
-                          se23_atan2(g->T.R.m[1][0], g->T.R.m[0][0]);
+                          se23_atan2(fwd_n.v[1], fwd_n.v[0]);
     se23_real_t sn, c;
     se23_sincos(d, &sn, &c);
     se23_mat3_t Rz, R;
     se23_vec3_t r, w, wl, Rwl;
-    int i, j, k;
+    int j, k;
     se23_m3_identity(&Rz);
     Rz.m[0][0] = c;
     Rz.m[0][1] = -sn;

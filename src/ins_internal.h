@@ -116,6 +116,12 @@ int se23_ins_rest_level(se23_ins_t *ins, const se23_imu_sample_t *s, int64_t dt_
 int se23_ins_zupt(se23_ins_t *ins, const se23_imu_sample_t *s, int rest);
 
 /**
+ * The non-holonomic constraint update (ins.h, "Vehicles") on the state.
+ * Returns 1 on success; a failure is counted in filter_errors.
+ */
+int se23_ins_nhc(se23_ins_t *ins);
+
+/**
  * The rest updates of a stationary sample in place on ins->g (zaru: the
  * ZARU rows too) by the structured update (kalman_rest.h), for the steady
  * state (ins_aid.c); SE23_OK, or the status on which se23_ins_zupt takes

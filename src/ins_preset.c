@@ -150,3 +150,107 @@ se23_status_t se23_ins_preset_foot(se23_real_t rate_hz, se23_real_t lat,
     *align = a;
     return SE23_OK;
 }
+
+se23_status_t se23_ins_preset_car(se23_real_t rate_hz, se23_real_t lat,
+                                  se23_ins_config_t *cfg, se23_ins_align_t *align)
+{
+    const se23_ins_config_t none = {0};
+    const se23_ins_align_t no_align = {0};
+    se23_ins_config_t c = none;
+    se23_ins_align_t a = no_align;
+    se23_real_t g = SE23_R(0);
+    se23_status_t st;
+    SE23_CHECK_NOT_NULL(cfg);
+    SE23_CHECK_NOT_NULL(align);
+    if (!((rate_hz >= SE23_R(50)) && (rate_hz <= SE23_R(10000)))) {
+        return SE23_ERR_DOMAIN;
+    }
+    st = se23_earth_gravity(lat, SE23_R(0), &g);
+    if (st != SE23_OK) {
+        return st;
+    }
+    /* The sensor: automotive-grade consumer MEMS, the class a GNSS module
+     * with dead reckoning or a telematics unit carries (e.g. Bosch
+     * SMI/BMI088, ST ASM330 class): gyro 0.01 deg/s/sqrt(Hz) and
+     * accelerometer 150 ug/sqrt(Hz), the upper end of their data sheets
+     * (a car's vibration adds to them); in-run bias walks of 1e-5 rad/s
+     * and 1e-4 m/s^2 per sqrt(s) (10 deg/h and 0.3 mg over 10 min, the
+     * class's instability plus a cabin's temperature change); range 2000
+     * deg/s, 16 g per axis. The same 1 % scale and cross-axis errors and
+     * 0.1 deg/s per g as any consumer part; a car's motions (a turn, a
+     * braking) last seconds: corr_time 1 s. Rotating Earth: over a
+     * minute's outage the Earth rate (15 deg/h) matters as much as the
+     * bias. */
+    c.noise.gyro_noise = SE23_R(0.01) * DEG;
+    c.noise.accel_noise = SE23_R(150e-6) * SE23_R(9.80665);
+    c.noise.gyro_walk = SE23_R(1e-5);
+    c.noise.accel_walk = SE23_R(1e-4);
+    c.motion.gyro_scale = SE23_R(0.01);
+    c.motion.accel_scale = SE23_R(0.01);
+    c.motion.gyro_g = (SE23_R(0.1) * DEG) / SE23_R(9.80665);
+    c.motion.corr_time = SE23_R(1);
+    c.gyro_range = SE23_R(2000) * DEG;
+    c.accel_range = SE23_R(16) * SE23_R(9.80665);
+    c.lat = lat;
+    c.earth_rotation = 1;
+    c.bias_states = 1;
+    c.dt_nominal = SE23_R(1) / rate_hz;
+    c.max_gap = SE23_R(0.05); /* a few lost samples */
+    c.max_outage = SE23_R(1);
+    c.outage_accel = SE23_R(5); /* a car brakes and turns at up to 0.5 g */
+    c.outage_rate = SE23_R(0.5);
+    /* Fixes a quarter of a second late are fused at their own time, if
+     * the ring holds that at this rate. */
+    c.delay_horizon = SE23_R(0.25);
+    if ((SE23_R(2) * c.delay_horizon * rate_hz) + SE23_R(2) > (se23_real_t)SE23_INS_RING) {
+        c.delay_horizon = (((se23_real_t)SE23_INS_RING - SE23_R(2)) / SE23_R(2)) / rate_hz;
+    }
+    /* The detector, for stops: a car at rest with its engine running
+     * vibrates, on a roof bracket by up to a few deg/s and 1 m/s^2 at the
+     * sensor (sigma_g 3 deg/s, sigma_a 1.5 m/s^2); a window of 0.3 s holds
+     * several periods of an idling engine (10-30 Hz). So wide a detector
+     * also calls a steady cruise on a smooth road rest (the IMU reads the
+     * same): the filter's own speed must allow rest too (rest_speed_max
+     * 0.5 m/s, a creep). At rest the car rocks on its suspension by a few
+     * mm/s, the same over a window: 2 cm/s per window, sqrt(W) per sample
+     * (as the foot preset). ZARU after 1 s at rest, 1-sigma 3 deg/s per
+     * sample: the idling vibration, white from sample to sample. */
+    c.zupt = 1;
+    {
+        const se23_real_t w = (SE23_R(0.3) * rate_hz) + SE23_R(0.5);
+        c.detector.window = (w > (se23_real_t)SE23_STATIONARY_WMAX) ? SE23_STATIONARY_WMAX
+                                                                      : (int)w;
+    }
+    c.detector.sigma_a = SE23_R(1.5);
+    c.detector.sigma_g = SE23_R(3) * DEG;
+    c.detector.gravity = g;
+    c.detector.threshold = se23_ins_detector_threshold(c.detector.window, Z_099);
+    c.rest_speed_max = SE23_R(0.5);
+    c.zupt_sigma_v = SE23_R(0.02) * se23_sqrt((se23_real_t)c.detector.window);
+    c.zaru_sigma_w = SE23_R(3) * DEG;
+    c.zaru_after = SE23_R(1);
+    /* The non-holonomic constraint: the rear tyres' slip angle stays below
+     * 1 deg up to 0.3 g of lateral acceleration (0.17 m/s at 10 m/s), and
+     * an IMU 1-2 m ahead of the rear axle moves sideways at the yaw rate
+     * times that (0.2-0.5 m/s in a parking-lot turn); the body heaves on
+     * its suspension at a few cm/s: 1-sigma 0.3 m/s. These last as long
+     * as a manoeuvre, about a second: one update per second. */
+    c.nhc_sigma = SE23_R(0.3);
+    c.nhc_interval = SE23_R(1);
+    /* Alignment: 2 s at rest (a car may leave its parking space 3 s after
+     * power-up); heading from the GNSS course above 3 m/s (10 km/h: the
+     * course of a 0.3 m/s-class fix within 3 deg), the car's axis within
+     * 3 deg of its course (sideslip and the mount's yaw error). Position
+     * from the fixes (1-sigma 10 m until the first). Turn-on biases of
+     * the class: 0.5 deg/s and 20 mg. */
+    a.sigma_p = SE23_R(10);
+    a.sigma_v = SE23_R(0.05);
+    a.sigma_bg = SE23_R(0.5) * DEG;
+    a.sigma_ba = SE23_R(0.02) * SE23_R(9.80665);
+    a.duration = SE23_R(2);
+    a.course_speed = SE23_R(3);
+    a.course_sigma = SE23_R(3) * DEG;
+    *cfg = c;
+    *align = a;
+    return SE23_OK;
+}

@@ -95,6 +95,26 @@ static se23_real_t accel_nis(const se23_ins_t *ins, const se23_vec3_t *fbar_n,
     return ((a0 * y0) + (a1 * y1) + (a2 * y2)) / det;
 }
 
+/* Nonzero if the filter's speed rules rest out (ins.h, "Zero-velocity
+ * updates"): |v|^2 > rest_speed_max^2 + 9 tr(P_nu), v the carried
+ * velocity (on rotating Earth it differs from the user's by Omega x p,
+ * 7e-5 m/s per metre from the origin: far below the margin over a drive).
+ * 9 multiply-adds. */
+static int moving_fast(const se23_ins_t *ins)
+{
+    const se23_real_t vm = ins->cfg.rest_speed_max;
+    const se23_real_t *v = ins->g.T.v.v;
+    const se23_real_t tr = (p_at(&ins->g, SE23_IDX_NU, SE23_IDX_NU) +
+                            p_at(&ins->g, SE23_IDX_NU + 1, SE23_IDX_NU + 1)) +
+                           p_at(&ins->g, SE23_IDX_NU + 2, SE23_IDX_NU + 2);
+    if (vm <= SE23_R(0)) {
+        return 0;
+    }
+    return (((v[0] * v[0]) + (v[1] * v[1])) + (v[2] * v[2]) > (vm * vm) + (SE23_R(9) * tr))
+               ? 1
+               : 0;
+}
+
 /*
  * The detector's verdict on the window ending with sample s (ins.h,
  * "Zero-velocity updates"). It sees the readings as the filter corrects
@@ -123,6 +143,9 @@ static int stationary_window(se23_ins_t *ins, const se23_imu_sample_t *s)
     }
     if ((se23_stationary_add(&ins->det, &w, &f_n, &stationary) != SE23_OK) || (stationary == 0)) {
         return 0; /* moving, or (absurd readings) a detector overflow */
+    }
+    if (moving_fast(ins) != 0) {
+        return 0;
     }
     if (ins->cfg.gravity_test_off != 0) {
         return 1;

@@ -2,8 +2,18 @@
  * preintegrated factor; see ins.h. */
 #include "ins_internal.h"
 
+/* Nonzero if the sample ending at t_ns starts a new nhc_interval (ins.h,
+ * "Vehicles"): a function of the times alone, so a replay applies the
+ * constraint at the same samples. */
+static int nhc_due(const se23_ins_t *ins, int64_t t_prev_ns, int64_t t_ns)
+{
+    return (ins->cfg.nhc_sigma > SE23_R(0)) &&
+           ((t_prev_ns / ins->nhc_interval_ns) != (t_ns / ins->nhc_interval_ns));
+}
+
 int se23_ins_step(se23_ins_t *ins, int64_t t_ns, const se23_imu_sample_t *s, int rest)
 {
+    const int64_t t_prev_ns = ins->t_ns;
     if (se23_ins_predict_interval(ins, s) == 0) {
         return 0;
     }
@@ -15,6 +25,9 @@ int se23_ins_step(se23_ins_t *ins, int64_t t_ns, const se23_imu_sample_t *s, int
         (void)se23_ins_zupt(ins, s, rest); /* a failure is counted; the prediction stands */
     } else {
         ins->status &= ~SE23_INS_ST_STATIONARY;
+        if (nhc_due(ins, t_prev_ns, t_ns) != 0) {
+            (void)se23_ins_nhc(ins); /* a failure is counted; the prediction stands */
+        }
     }
     return 1;
 }

@@ -1,4 +1,5 @@
-/* Ready-made measurement models; see kalman.h. Each writes m = 3, the
+/* Ready-made measurement models; see kalman.h. Each writes m = 3 (the
+ * non-holonomic constraint: 2), the
  * residual z = y - h(Tbar, bbar), the three rows of H for the
  * right-multiplied error (all 15 columns, zero blocks included) and R's
  * leading 3x3 block: 3 + 45 + 9 stores. The entries beyond those rows,
@@ -11,6 +12,7 @@
 #include "linalg.h"
 #include "kalman_parts.h"
 #include "se23/se23.h"
+#include "se23/so3.h"
 
 enum {
     S = SE23_GAUSS_NMAX,
@@ -211,4 +213,53 @@ se23_status_t se23_meas_zero_rate(const se23_vec3_t *w_meas,
     se23_m3_identity(&I);
     const se23_mat3_t *const blk[NB] = {NULL, NULL, NULL, &I, NULL};
     return put3(&rest, &h, cov, blk, y);
+}
+
+se23_status_t se23_meas_nhc(const se23_pose_t *T, const se23_mat3_t *C_bv, se23_real_t sigma,
+                            se23_meas_t *y)
+{
+    SE23_CHECK_NOT_NULL(T);
+    SE23_CHECK_NOT_NULL(C_bv);
+    SE23_CHECK_NOT_NULL(y);
+    se23_status_t st = se23_pose_check(T);
+    if (st == SE23_OK) {
+        st = se23_so3_check(C_bv);
+    }
+    if (st != SE23_OK) {
+        return st;
+    }
+    if (!((sigma > SE23_R(0)) && (sigma <= SE23_MEAS_NHC_SIGMA_MAX))) {
+        return SE23_ERR_DOMAIN;
+    }
+    /* u = R^T v, the body velocity; h_r = c_r . u for c_r = column r of
+     * C_bv (the vehicle's right and down axes in the body frame), and
+     * H_r = c_r^T [u^, I, 0, 0, 0] (se23_meas_vel_body's H): c^T u^ phi =
+     * c . (u x phi) = (c x u) . phi, so H_r = [(c_r x u)^T, c_r^T, 0...].
+     * 27 multiplies. */
+    se23_vec3_t u;
+    se23_real_t z[2], H[2][6];
+    se23_m3_tmul_v3(&T->R, &T->v, &u);
+    for (int r = 0; r < 2; ++r) {
+        const se23_vec3_t c = {{C_bv->m[0][r + 1], C_bv->m[1][r + 1], C_bv->m[2][r + 1]}};
+        se23_vec3_t cu;
+        se23_v3_cross(&c, &u, &cu);
+        z[r] = -se23_v3_dot(&c, &u);
+        for (int j = 0; j < 3; ++j) {
+            H[r][j] = cu.v[j];
+            H[r][3 + j] = c.v[j];
+        }
+    }
+    if ((se23_all_finite(z, 2) == 0) || (se23_all_finite(&H[0][0], 12) == 0)) {
+        return SE23_ERR_NONFINITE;
+    }
+    y->m = 2;
+    for (int r = 0; r < 2; ++r) {
+        y->z[r] = z[r];
+        for (int j = 0; j < S; ++j) {
+            y->H[(S * r) + j] = (j < 6) ? H[r][j] : SE23_R(0);
+        }
+        y->R[(M * r) + r] = sigma * sigma;
+        y->R[(M * r) + (1 - r)] = SE23_R(0);
+    }
+    return SE23_OK;
 }

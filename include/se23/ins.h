@@ -92,6 +92,9 @@
  *    the present (section "Delayed fixes");
  *  - older than the horizon or than the last fused fix: rejected, counted
  *    in gnss_stale.
+ * A fix's time is first moved by gnss_time_offset (the IMU clock minus
+ * the GNSS clock: a receiver whose fixes are stamped on another clock, or
+ * an IMU logged late).
  * A chi-square gate on the normalised innovation squared (gnss_gate; 0:
  * none) rejects outliers (gnss_gated, SE23_INS_ST_GNSS_GATED). After
  * gate_recover consecutive gated fixes (0: never) the filter trusts the
@@ -105,8 +108,8 @@
  * any fix within the horizon has a snapshot before it. Fusing a fix stamped
  * d seconds late costs the replay of up to d + delay_horizon seconds of
  * samples (prediction and the zero-velocity updates), in that call.
- * Memory: sizeof(se23_ins_t) = 17,784 B + SE23_INS_RING x 72 B in double,
- * 9,120 B + SE23_INS_RING x 48 B in float (27,000 / 15,264 B with the
+ * Memory: sizeof(se23_ins_t) = 17,928 B + SE23_INS_RING x 72 B in double,
+ * 9,200 B + SE23_INS_RING x 48 B in float (27,144 / 15,344 B with the
  * default ring; README "The navigation filter"; test_ins.c asserts it),
  * the kernels' work areas included (1,512 / 756 B, kept here and not on
  * the stack of the calls);
@@ -127,7 +130,10 @@
  * foot has no smooth starts (a swing begins with a heel lift at over
  * 100 deg/s, which SHOE's gyro term sees), and a test against the
  * filter's own attitude would keep a filter that missed one stance from
- * every later one. While the window is stationary, each
+ * every later one. With rest_speed_max > 0 the filter's own speed must
+ * also allow rest: |v|^2 <= rest_speed_max^2 + 9 tr(P_nu) (a vehicle's
+ * IMU reads the same at rest and cruising at a steady speed on a smooth
+ * road; only the filter knows which). While the window is stationary, each
  * sample applies v = 0 (nav frame, 1-sigma sqrt(zupt_sigma_v^2 + W
  * (zupt_lever |w|)^2), w = w_meas + b_g: a body at rest that still turns
  * at w about a point zupt_lever away, a foot rolling over its heel or toe,
@@ -167,6 +173,18 @@
  * stride start a new level each; a gentler one is pulled toward the level
  * it started on. Counted in floor_used / floor_levels.
  *
+ * Vehicles. A wheeled vehicle neither slides sideways nor leaves the road:
+ * with nhc_sigma > 0, a moving sample (the detector, if on, not at rest)
+ * that starts a new nhc_interval (its time and the previous sample's in
+ * different multiples of nhc_interval: the same samples in a replay)
+ * applies the non-holonomic constraint, lateral and vertical velocity 0 in
+ * the vehicle frame, 1-sigma nhc_sigma (se23_meas_nhc: the mounting C_bv =
+ * exp(mount_bv^) turns the body frame into the vehicle's). Its error, the
+ * sideslip of the tyres and the body's roll and heave on its suspension,
+ * stays the same over about a second, so one update per nhc_interval
+ * carries what it knows and no more. Counted in nhc_used. The course
+ * heading (below) is that of the vehicle's forward axis, C_bv e_1.
+ *
  * Alignment. se23_ins_align starts a static alignment: the readings of
  * the first stationary stretch (duration seconds of consecutive stationary
  * detector verdicts, at least one window; motion starts the average again)
@@ -175,7 +193,8 @@
  * GNSS course (course_speed > 0: the heading is unknown, 1-sigma 1 rad,
  * status SE23_INS_ST_HEADING_UNKNOWN, and fixes fuse their position only,
  * until the first fix whose horizontal velocity exceeds course_speed sets
- * the heading of body x to its course, with 1-sigma sqrt(course_sigma^2 +
+ * the heading of the vehicle's forward axis ("Vehicles"; body x when
+ * mount_bv is zero) to its course, with 1-sigma sqrt(course_sigma^2 +
  * (sigma_v / speed)^2), and the velocity to the fix; course_headings)
  * or, with gyrocompass set, from the Earth rate the gyro senses; the
  * attitude covariance from the window's statistics, v = 0, p and the bias
@@ -206,6 +225,7 @@
  *   se23_ins_take_factor  the last finished preintegrated factor
  *   se23_ins_detector_threshold   the detector threshold for a probability
  *   se23_ins_preset_foot  the pedestrian (foot-mounted) configuration
+ *   se23_ins_preset_car   a car's configuration (IMU and GNSS)
  */
 #ifndef SE23_INS_H
 #define SE23_INS_H
@@ -336,6 +356,7 @@ typedef struct {
     uint32_t zaru_used;        /**< zero-rate updates applied */
     uint32_t floor_used;       /**< floor updates applied (one per stance) */
     uint32_t floor_levels;     /**< floor levels set: the first stance, then each new one */
+    uint32_t nhc_used;         /**< non-holonomic constraint updates applied */
     uint32_t time_resets;      /**< clock steps, back or forward ("Clock", "Outage") */
     uint32_t filter_errors;    /**< library steps that failed (state kept) */
     uint32_t init_rejected;    /**< refused initial states and alignment requests */
@@ -372,6 +393,9 @@ typedef struct {
     se23_stationary_config_t detector; /**< window, noise, threshold (stationary.h) */
     int gravity_test_off;       /**< 1: no mean-acceleration test at rest ("Zero-velocity updates") */
     se23_real_t zupt_sigma_v;   /**< 1-sigma of v = 0 at rest [m/s] */
+    se23_real_t rest_speed_max; /**< a stationary window is rest only if the filter's
+                                 *   speed is within this [m/s] plus 3 sigma
+                                 *   ("Zero-velocity updates"; 0: no test) */
     se23_real_t zupt_lever;     /**< distance [m] from the point a body at rest turns
                                  *   about: the ZUPT's 1-sigma grows with the rate
                                  *   ("Zero-velocity updates"; 0: constant) */
@@ -383,6 +407,18 @@ typedef struct {
                                  *   stance is on a new level (floor_sigma > 0) */
     se23_real_t floor_swing;    /**< motion [s] that separates two stances (shorter:
                                  *   the detector's flicker within one) */
+    se23_vec3_t mount_bv;       /**< the IMU's mounting: rotation vector [rad] of C_bv,
+                                 *   x_b = C_bv x_v from the vehicle frame (forward,
+                                 *   right, down) to the body (IMU) frame; zero: the IMU
+                                 *   axes are the vehicle's ("Vehicles") */
+    se23_real_t nhc_sigma;      /**< 1-sigma of the vehicle frame's lateral and
+                                 *   vertical velocity [m/s] (non-holonomic constraint,
+                                 *   "Vehicles"; 0: off) */
+    se23_real_t nhc_interval;   /**< time between two NHC updates [s]: how long the
+                                 *   constraint's error (sideslip, suspension) stays
+                                 *   the same (nhc_sigma > 0) */
+    se23_real_t gnss_time_offset; /**< added to every fix's time [s]: the IMU clock
+                                   *   minus the GNSS clock, |.| <= 1 s ("GNSS") */
 } se23_ins_config_t;
 
 /** A GNSS fix in the nav frame, stamped with the time it refers to. */
@@ -482,6 +518,8 @@ typedef struct {
     int64_t move_ns;              /**< time it has seen motion since (0: at rest;
                                    *   saturates at floor_swing_ns) */
     int64_t floor_swing_ns;       /**< floor_swing */
+    int64_t nhc_interval_ns;      /**< nhc_interval */
+    int64_t gnss_offset_ns;       /**< gnss_time_offset */
     /* structures holding int64 */
     se23_ins_gnss_t pending;      /**< a fix ahead of the state */
     se23_ins_factor_t fac, fac_out; /**< preintegration */
@@ -508,6 +546,7 @@ typedef struct {
     se23_earth_model_t model;
     se23_ins_counters_t c;
     se23_ins_config_t cfg;
+    se23_mat3_t C_bv;             /**< the mounting, exp(mount_bv^) */
     se23_imu_noise_t noise;       /**< the white noise propagated: cfg.noise, or
                                    *   raised by a measuring alignment */
     se23_stationary_t det;
@@ -554,6 +593,23 @@ se23_real_t se23_ins_detector_threshold(int window, se23_real_t z);
  */
 se23_status_t se23_ins_preset_foot(se23_real_t rate_hz, se23_real_t lat,
                                    se23_ins_config_t *cfg, se23_ins_align_t *align);
+
+/**
+ * cfg, align = the car preset for an automotive-class MEMS IMU at rate_hz
+ * in a car with GNSS, latitude lat: rotating Earth, 15 states, the
+ * non-holonomic constraint once a second, ZUPT and ZARU at stops (the
+ * filter's speed confirming rest), alignment from the first 2 s at rest
+ * with the heading from the GNSS course ("Vehicles", src/ins_preset.c for
+ * every value). The installation is the caller's: lever_b (the antenna)
+ * and mount_bv (the IMU's mounting) are zero here.
+ * @param rate_hz the IMU rate [Hz], 50 to 10,000
+ * @param lat latitude [rad] of the nav frame's origin
+ * @param cfg out: the filter configuration (written only on SE23_OK)
+ * @param align out: the alignment request (written only on SE23_OK)
+ * @return as se23_ins_preset_foot.
+ */
+se23_status_t se23_ins_preset_car(se23_real_t rate_hz, se23_real_t lat,
+                                  se23_ins_config_t *cfg, se23_ins_align_t *align);
 
 /**
  * ins = an empty filter (no state) for cfg.

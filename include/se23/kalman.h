@@ -60,6 +60,7 @@
  *   se23_meas_vel_nav_lever  GNSS velocity of an antenna at a lever arm
  *   se23_meas_vel_body       velocity in the body frame (odometer; ZUPT too)
  *   se23_meas_zero_rate      zero angular rate (ZARU), gyro bias only
+ *   se23_meas_nhc            a wheeled vehicle's non-holonomic constraint
  *
  * Zero velocity (ZUPT) needs no model of its own: at rest v = 0, so
  * se23_meas_vel_nav with v_n the zero vector (H = [0, R, 0, 0, 0]) is the
@@ -256,6 +257,36 @@ se23_status_t se23_meas_vel_body(const se23_pose_t *T, const se23_vec3_t *v_b,
 se23_status_t se23_meas_zero_rate(const se23_vec3_t *w_meas,
                                   const se23_vec3_t *b_g,
                                   const se23_mat3_t *cov, se23_meas_t *y);
+
+/** Largest 1-sigma se23_meas_nhc takes [m/s]. */
+#define SE23_MEAS_NHC_SIGMA_MAX SE23_R(1e3)
+
+/**
+ * y = the non-holonomic constraint of a wheeled vehicle: it neither slides
+ * sideways nor leaves the road, so its velocity has no lateral and no
+ * vertical component in the vehicle frame v (forward, right, down). The
+ * IMU is mounted with x_b = C_bv x_v. The pseudo-measurement 0 of the two
+ * rows
+ *   h(T) = [e_2, e_3]^T C_bv^T R^T v,
+ * linearised as se23_meas_vel_body (R^T v = u + u^ phi + nu, u = Rbar^T
+ * vbar): with c_r the columns 2 and 3 of C_bv (the vehicle's right and
+ * down axes in the body frame),
+ *   H_r = [(c_r x u)^T, c_r^T, 0, 0, 0],  z_r = -c_r . u,  R = sigma^2 I_2.
+ * The constraint holds at the vehicle's reference point (the rear axle's
+ * middle); an IMU away from it also moves with w x l, which sigma covers
+ * (the caller's choice, see the car preset in ins.h).
+ * @param T     estimate Tbar
+ * @param C_bv  the mounting rotation, vehicle to body frame
+ * @param sigma 1-sigma of each velocity component [m/s], in (0,
+ *              SE23_MEAS_NHC_SIGMA_MAX]
+ * @param y     out: the measurement model, m = 2 (written only on SE23_OK)
+ * @return SE23_ERR_NOT_ROTATION (T's R or C_bv), SE23_ERR_NONFINITE (T, or
+ *         a residual or entry of H that would overflow), SE23_ERR_DOMAIN
+ *         (sigma not in its range, NaN included). On error y is not
+ *         written.
+ */
+se23_status_t se23_meas_nhc(const se23_pose_t *T, const se23_mat3_t *C_bv, se23_real_t sigma,
+                            se23_meas_t *y);
 
 #ifdef __cplusplus
 }

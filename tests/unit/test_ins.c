@@ -84,6 +84,18 @@ static void m_motion_tau(se23_ins_config_t *c) { c->motion.corr_time = (se23_rea
 static void m_gravity_flag(se23_ins_config_t *c) { c->gravity_test_off = 2; }
 static void m_lever_neg(se23_ins_config_t *c) { c->zupt_lever = SE23_R(-0.1); }
 static void m_lever_big(se23_ins_config_t *c) { c->zupt_lever = (se23_real_t)1.01; }
+static void m_mount_big(se23_ins_config_t *c) { c->mount_bv.v[2] = SE23_R(6.3); }
+static void m_mount_nan(se23_ins_config_t *c) { c->mount_bv.v[0] = (se23_real_t)NAN; }
+static void m_nhc_neg(se23_ins_config_t *c) { c->nhc_sigma = SE23_R(-0.3); }
+static void m_nhc_big(se23_ins_config_t *c) { c->nhc_sigma = SE23_R(2e3); }
+static void m_nhc_no_interval(se23_ins_config_t *c) { c->nhc_sigma = SE23_R(0.3); }
+static void m_nhc_long_interval(se23_ins_config_t *c)
+{
+    c->nhc_sigma = SE23_R(0.3);
+    c->nhc_interval = SE23_R(61);
+}
+static void m_offset_big(se23_ins_config_t *c) { c->gnss_time_offset = SE23_R(-1.01); }
+static void m_rest_speed_neg(se23_ins_config_t *c) { c->rest_speed_max = SE23_R(-0.5); }
 
 /* The filter's RAM as ins.h and the README state it (a firmware's budget):
  * a fixed part plus the ring of SE23_INS_RING samples. */
@@ -92,10 +104,10 @@ static void test_ins_memory_is_as_documented(void **state)
     (void)state;
 #if SE23_CFG_DOUBLE
     assert_int_equal(sizeof(se23_ins_hist_t), 72);
-    assert_int_equal(sizeof(se23_ins_t), 17784 + SE23_INS_RING * 72);
+    assert_int_equal(sizeof(se23_ins_t), 17928 + SE23_INS_RING * 72);
 #else
     assert_int_equal(sizeof(se23_ins_hist_t), 48);
-    assert_int_equal(sizeof(se23_ins_t), 9120 + SE23_INS_RING * 48);
+    assert_int_equal(sizeof(se23_ins_t), 9200 + SE23_INS_RING * 48);
 #endif
 }
 
@@ -123,6 +135,14 @@ static void test_setup_rejects_each_bad_field_and_writes_nothing(void **state)
         {m_motion_big, SE23_ERR_DOMAIN},   {m_motion_tau, SE23_ERR_DOMAIN},
         {m_gravity_flag, SE23_ERR_DOMAIN}, {m_lever_neg, SE23_ERR_DOMAIN},
         {m_lever_big, SE23_ERR_DOMAIN},
+        {m_mount_big, SE23_ERR_DOMAIN},
+        {m_mount_nan, SE23_ERR_NONFINITE},
+        {m_nhc_neg, SE23_ERR_DOMAIN},
+        {m_nhc_big, SE23_ERR_DOMAIN},
+        {m_nhc_no_interval, SE23_ERR_DOMAIN},
+        {m_nhc_long_interval, SE23_ERR_DOMAIN},
+        {m_offset_big, SE23_ERR_DOMAIN},
+        {m_rest_speed_neg, SE23_ERR_DOMAIN},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
         se23_ins_config_t c;

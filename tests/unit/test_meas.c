@@ -1,6 +1,7 @@
 /* Unit tests of src/meas.c: the ready-made measurement models (GNSS
  * position with lever arm, velocity in the nav frame, velocity of an
- * antenna at a lever arm, velocity in the body frame, zero angular rate):
+ * antenna at a lever arm, velocity in the body frame, zero angular rate,
+ * a vehicle's non-holonomic constraint):
  * residuals, all 15 columns of H against central differences of
  * h(Tbar exp(xi), bbar + db) in the double reference, noise copied, every
  * element of the output defined, bad input (nothing written), and Kalman
@@ -252,6 +253,91 @@ static void test_meas_new_models_blocks(void **state)
             assert_true(out.H[S * i + j] == e);
         }
     }
+}
+
+/* The non-holonomic constraint: h = rows 2 and 3 of C_bv^T R^T v, so its
+ * residual and H are those rows of C_bv^T times the body-velocity model's
+ * central differences (in double), for random poses and mountings; R =
+ * sigma^2 I_2; m = 2. */
+static void test_meas_nhc_matches_central_differences(void **state)
+{
+    (void)state;
+    se23t_rng_t rng;
+    se23t_rng_seed(&rng, 706);
+    for (int rep = 0; rep < 30; ++rep) {
+        case_t c;
+        se23_vec3_t m_rv;
+        se23_mat3_t C_bv;
+        se23_meas_t out;
+        random_case(&rng, VEL_BODY, &c);
+        se23t_random_vec3(&rng, 1.5, &m_rv);
+        assert_int_equal(se23_so3_exp(&m_rv, &C_bv), SE23_OK);
+        memset(&out, SENTINEL, sizeof out);
+        assert_int_equal(se23_meas_nhc(&c.T, &C_bv, SE23_R(0.3), &out), SE23_OK);
+        assert_int_equal(out.m, 2);
+        gt_m5_t Td;
+        gt_from_pose(&c.T, &Td);
+        const double none[3] = {0};
+        double u[3], cd[3][S];
+        reference_h(VEL_BODY, &Td, &c, none, u);
+        central_differences(VEL_BODY, &c, cd);
+        for (int r = 0; r < 2; ++r) {
+            double h = 0, hj[S] = {0}, scale = 0;
+            for (int k = 0; k < 3; ++k) {
+                const double ck = (double)C_bv.m[k][r + 1];
+                h += ck * u[k];
+                for (int j = 0; j < S; ++j) {
+                    hj[j] += ck * cd[k][j];
+                }
+            }
+            for (int j = 0; j < S; ++j) {
+                scale = fmax(scale, fabs(hj[j]));
+            }
+            assert_near(out.z[r], -h, 2 * TOL * 40, 0.0);
+            for (int j = 0; j < S; ++j) {
+                assert_near(out.H[S * r + j], hj[j], 1e-7 * (1.0 + scale) + 32.0 * SE23T_EPS * scale,
+                            0.0);
+            }
+            assert_true(out.R[M * r + r] == SE23_R(0.3) * SE23_R(0.3));
+            assert_true(out.R[M * r + (1 - r)] == SE23_R(0));
+        }
+    }
+}
+
+/* A car driving straight along its own axis satisfies the constraint (z =
+ * 0); one sliding sideways at 1 m/s has z = (-1, 0); a bad mounting, sigma
+ * or pose is refused with y untouched. */
+static void test_meas_nhc_values_and_refusals(void **state)
+{
+    (void)state;
+    se23_pose_t T;
+    se23_mat3_t I3, bad;
+    se23_meas_t y, before;
+    const se23_vec3_t no_turn = {{0}};
+    se23_identity(&T);
+    assert_int_equal(se23_so3_exp(&no_turn, &I3), SE23_OK);
+    T.v.v[0] = SE23_R(15);
+    assert_int_equal(se23_meas_nhc(&T, &I3, SE23_R(0.3), &y), SE23_OK);
+    assert_true(y.z[0] == SE23_R(0) && y.z[1] == SE23_R(0));
+    T.v.v[1] = SE23_R(1);
+    assert_int_equal(se23_meas_nhc(&T, &I3, SE23_R(0.3), &y), SE23_OK);
+    assert_true(y.z[0] == SE23_R(-1) && y.z[1] == SE23_R(0));
+    memset(&y, SENTINEL, sizeof y);
+    before = y;
+    bad = I3;
+    bad.m[0][0] = SE23_R(1.1);
+    assert_int_equal(se23_meas_nhc(&T, &bad, SE23_R(0.3), &y), SE23_ERR_NOT_ROTATION);
+    assert_int_equal(se23_meas_nhc(&T, &I3, SE23_R(0), &y), SE23_ERR_DOMAIN);
+    assert_int_equal(se23_meas_nhc(&T, &I3, SE23_R(NAN), &y), SE23_ERR_DOMAIN);
+    assert_int_equal(se23_meas_nhc(&T, &I3, SE23_R(2e3), &y), SE23_ERR_DOMAIN);
+    T.v.v[2] = SE23_R(INFINITY);
+    assert_int_equal(se23_meas_nhc(&T, &I3, SE23_R(0.3), &y), SE23_ERR_NONFINITE);
+    assert_memory_equal(&y, &before, sizeof y);
+#if SE23_CFG_ARG_CHECKS
+    assert_int_equal(se23_meas_nhc(NULL, &I3, SE23_R(0.3), &y), SE23_ERR_NULL);
+    assert_int_equal(se23_meas_nhc(&T, NULL, SE23_R(0.3), &y), SE23_ERR_NULL);
+    assert_int_equal(se23_meas_nhc(&T, &I3, SE23_R(0.3), NULL), SE23_ERR_NULL);
+#endif
 }
 
 static void test_meas_vel_body_is_zero_velocity_update(void **state)
@@ -598,6 +684,8 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_meas_models_match_central_differences),
         cmocka_unit_test(test_meas_new_models_blocks),
+        cmocka_unit_test(test_meas_nhc_matches_central_differences),
+        cmocka_unit_test(test_meas_nhc_values_and_refusals),
         cmocka_unit_test(test_meas_vel_body_is_zero_velocity_update),
         cmocka_unit_test(test_meas_zupt_and_zero_lever_are_vel_nav),
         cmocka_unit_test(test_meas_models_reject_bad_input_untouched),

@@ -19,6 +19,7 @@
 #include "replay.h"
 #include "se23/earth.h"
 #include "se23/ins.h"
+#include "se23/so3.h"
 #include "se23lcm_gnss_fix.h"
 #include "se23lcm_imu_info.h"
 #include "se23lcm_imu_sample.h"
@@ -52,6 +53,8 @@ typedef struct {
     double imu_rate; /* --imu-rate [Hz]; 0: not given */
     double lat_deg, max_gap, gate, horizon, max_outage, preint, lever[3];
     double alpha, zupt_sv, zupt_lever, floor_sigma;
+    double mount_deg[3]; /* --mount roll, pitch, yaw of C_bv [deg] */
+    double nhc_sigma, gnss_offset;
     int64_t recover, window;
     int profile, earth, bias, zupt;
 } filter_opts_t;
@@ -59,7 +62,7 @@ typedef struct {
 typedef struct {
     const char *in_url;
     const char *out_url;
-    int preset;         /* 0 none, 1 foot */
+    int preset;         /* 0 none, 1 foot, 2 car */
     filter_opts_t f;
     double nav_rate;
     int progress;
@@ -97,6 +100,17 @@ static void usage(FILE *f)
             "                        foot-mounted consumer MEMS IMU, ZUPT/ZARU, static\n"
             "                        alignment at the first rest, no GNSS; replaces the\n"
             "                        noise, detector and filter options)\n"
+            "  --preset car          the library's car preset (se23_ins_preset_car:\n"
+            "                        automotive MEMS IMU with GNSS, non-holonomic\n"
+            "                        constraint, ZUPT at stops, alignment at the first\n"
+            "                        2 s at rest with the heading from the GNSS course;\n"
+            "                        --lever, --mount and --gnss-time-offset apply)\n"
+            "  --mount R,P,Y         the IMU's mounting, C_bv = Rz(Y) Ry(P) Rx(R), x_b =\n"
+            "                        C_bv x_v from the vehicle frame [deg] (0,0,0)\n"
+            "  --nhc-sigma S         1-sigma of the non-holonomic constraint [m/s], 0 = off\n"
+            "                        (the car preset's 0.3)\n"
+            "  --gnss-time-offset S  added to every fix's time: the IMU clock minus the\n"
+            "                        GNSS clock [s] (0)\n"
             "  --imu-rate HZ         nominal IMU rate (the log's SE23_IMU_INFO, written\n"
             "                        by se23-import, else 200); one that differs from the\n"
             "                        log's by more than 1 %% is refused (exit status 5)\n"
@@ -190,7 +204,10 @@ static void zupt_config(const harness_imu_profile_t *prof, double rate, double l
 
 static int preset_find(const char *name)
 {
-    return strcmp(name, "none") == 0 ? 0 : strcmp(name, "foot") == 0 ? 1 : -1;
+    return strcmp(name, "none") == 0 ? 0
+           : strcmp(name, "foot") == 0 ? 1
+           : strcmp(name, "car") == 0  ? 2
+                                       : -1;
 }
 
 static int parse_args(int argc, char **argv, node_opts_t *o)
@@ -217,6 +234,9 @@ static int parse_args(int argc, char **argv, node_opts_t *o)
         {"--zupt-sigma-v", HOPT_DOUBLE, &f->zupt_sv, 1e-6, 1e3, NULL},
         {"--zupt-lever", HOPT_DOUBLE, &f->zupt_lever, 0.0, 1.0, NULL},
         {"--floor-sigma", HOPT_DOUBLE, &f->floor_sigma, 0.0, 1e3, NULL},
+        {"--mount", HOPT_VEC3, f->mount_deg, -360.0, 360.0, NULL},
+        {"--nhc-sigma", HOPT_DOUBLE, &f->nhc_sigma, 0.0, 1e3, NULL},
+        {"--gnss-time-offset", HOPT_DOUBLE, &f->gnss_offset, -1.0, 1.0, NULL},
         {"--max-gap", HOPT_DOUBLE, &f->max_gap, 1e-6, 1.0, NULL},
         {"--max-outage", HOPT_DOUBLE, &f->max_outage, 0.0, (double)SE23_INS_MAX_OUTAGE, NULL},
         {"--preint", HOPT_DOUBLE, &f->preint, 0.0, inf, NULL},
@@ -237,6 +257,7 @@ static int parse_args(int argc, char **argv, node_opts_t *o)
     f->zupt_sv = -1.0;
     f->zupt_lever = -1.0;
     f->floor_sigma = -1.0;
+    f->nhc_sigma = -1.0;
     f->recover = 5;
     f->window = 20;
     f->profile = HARNESS_IMU_MEMS;
@@ -260,6 +281,24 @@ static int parse_args(int argc, char **argv, node_opts_t *o)
     }
     if (o->out_url == NULL) {
         o->out_url = strncmp(o->in_url, "file://", 7) == 0 ? "file://ins.log?mode=w" : o->in_url;
+    }
+    return 0;
+}
+
+/* The rotation vector of C_bv = Rz(yaw) Ry(pitch) Rx(roll) (--mount,
+ * degrees); -1 after a message if the library refuses it. */
+static int mount_rotation(const double rpy_deg[3], se23_vec3_t *rv)
+{
+    const double cr = cos(rpy_deg[0] * DEG), sr = sin(rpy_deg[0] * DEG);
+    const double cp = cos(rpy_deg[1] * DEG), sp = sin(rpy_deg[1] * DEG);
+    const double cy = cos(rpy_deg[2] * DEG), sy = sin(rpy_deg[2] * DEG);
+    const se23_mat3_t C = {{{cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr},
+                            {sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr},
+                            {-sp, cp * sr, cp * cr}}};
+    if (se23_so3_log(&C, rv) != SE23_OK) {
+        fprintf(stderr, "se23-ins: --mount %g,%g,%g is not a usable rotation\n", rpy_deg[0],
+                rpy_deg[1], rpy_deg[2]);
+        return -1;
     }
     return 0;
 }
@@ -304,10 +343,26 @@ static int build_config(const node_opts_t *o, double rate, const char *rate_from
     c->preint_window = f->preint;
     c->zupt = f->zupt;
     zupt_config(prof, rate, f->lat_deg * DEG, (int)f->window, f->alpha, c);
-    if (o->preset == 1 && se23_ins_preset_foot(rate, f->lat_deg * DEG, c, align) != SE23_OK) {
-        fprintf(stderr, "se23-ins: --preset foot needs an IMU rate in [50, 10000] Hz, not "
-                        "%g Hz (%s)\n", rate, rate_from);
+    if ((o->preset == 1 && se23_ins_preset_foot(rate, f->lat_deg * DEG, c, align) != SE23_OK) ||
+        (o->preset == 2 && se23_ins_preset_car(rate, f->lat_deg * DEG, c, align) != SE23_OK)) {
+        fprintf(stderr, "se23-ins: --preset %s needs an IMU rate in [50, 10000] Hz, not "
+                        "%g Hz (%s)\n", o->preset == 1 ? "foot" : "car", rate, rate_from);
         return -1;
+    }
+    if (o->preset != 1) { /* the installation: the foot preset has none */
+        if (mount_rotation(f->mount_deg, &c->mount_bv) != 0) {
+            return -1;
+        }
+        c->gnss_time_offset = f->gnss_offset;
+        for (i = 0; i < 3; i++) {
+            c->lever_b.v[i] = f->lever[i];
+        }
+    }
+    if (f->nhc_sigma >= 0.0) {
+        c->nhc_sigma = f->nhc_sigma;
+        if (c->nhc_interval <= 0.0) {
+            c->nhc_interval = 1.0;
+        }
     }
     if (f->zupt_sv > 0.0) {
         c->zupt_sigma_v = f->zupt_sv;
@@ -667,6 +722,7 @@ static void summary(const node_t *nd, int64_t skipped, double cpu_s)
         {"zaru_used", c->zaru_used},
         {"floor_used", c->floor_used},
         {"floor_levels", c->floor_levels},
+        {"nhc_used", c->nhc_used},
         {"time_resets", c->time_resets},
         {"filter_errors", c->filter_errors},
         {"init_rejected", c->init_rejected},

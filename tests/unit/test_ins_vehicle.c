@@ -1,0 +1,220 @@
+/* Unit tests of the navigation filter's vehicle features (ins.h,
+ * "Vehicles"): the non-holonomic constraint applied once per nhc_interval
+ * (at the same samples in every run) pulls a wrong lateral velocity to
+ * zero and leaves the forward one alone; the GNSS time offset fuses a fix
+ * as if stamped on the IMU's clock; rest_speed_max keeps a steady cruise
+ * from passing for rest; the car preset passes setup at any rate it
+ * accepts and refuses the others. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "ins_test.h"
+#include "se23/ins.h"
+#include "se23_test.h"
+
+static se23_ins_t ins; /* large: static */
+
+/* it_config without ZUPT, 15 states, NHC of sigma_nhc (0: off) once a
+ * second, started level at the origin moving at v0 (nav = body frame),
+ * velocity 1-sigma s_v. */
+static void start_moving(double sigma_nhc, const double v0[3], double s_v)
+{
+    se23_ins_config_t c;
+    se23_gauss_t g;
+    it_config(&c, 1);
+    c.zupt = 0;
+    c.nhc_sigma = (se23_real_t)sigma_nhc;
+    c.nhc_interval = SE23_R(1);
+    assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
+    it_initial(15, 1e-3, s_v, 1.0, &g);
+    for (int i = 0; i < 3; ++i) {
+        g.T.v.v[i] = (se23_real_t)v0[i];
+    }
+    assert_int_equal(se23_ins_init(&ins, 0, &g), SE23_OK);
+}
+
+/* n noise-free samples of a level body moving at a constant velocity (it
+ * reads what a body at rest reads), from sample k0 + 1. */
+static void cruise(int k0, int n)
+{
+    for (int k = k0 + 1; k <= k0 + n; ++k) {
+        se23_vec3_t w, f;
+        it_rest_sample(NULL, NULL, NULL, NULL, &w, &f);
+        assert_int_equal(se23_ins_imu(&ins, k * IT_DT_NS, k, &w, &f), SE23_INS_USED);
+    }
+}
+
+static double vel_var(const se23_gauss_t *g, int i)
+{
+    return (double)g->P.m[SE23_GAUSS_NMAX * (SE23_IDX_NU + i) + (SE23_IDX_NU + i)];
+}
+
+/* A car believed to slide sideways at 0.8 m/s (1-sigma 1 m/s) while it
+ * drives straight at 10 m/s: five seconds of NHC bring the lateral
+ * velocity within its new 1-sigma of zero and below 0.3 m/s; the forward
+ * velocity and its variance stay as they were to 1 %; exactly one update
+ * per second. Without NHC the lateral velocity stays 0.8 m/s. */
+static void test_nhc_pulls_lateral_velocity_to_zero(void **state)
+{
+    (void)state;
+    const double v0[3] = {10.0, 0.8, 0.0};
+    se23_gauss_t with, without;
+    int64_t t;
+    start_moving(0.3, v0, 1.0);
+    cruise(0, 5 * 200);
+    assert_int_equal(ins.c.nhc_used, 5);
+    assert_int_equal(ins.c.filter_errors, 0);
+    assert_int_equal(se23_ins_state(&ins, &with, &t), SE23_OK);
+    start_moving(0.0, v0, 1.0);
+    cruise(0, 5 * 200);
+    assert_int_equal(ins.c.nhc_used, 0);
+    assert_int_equal(se23_ins_state(&ins, &without, &t), SE23_OK);
+    print_message("lateral v: NHC %.4f (1-sigma %.4f), none %.4f\n", (double)with.T.v.v[1],
+                  sqrt(vel_var(&with, 1)), (double)without.T.v.v[1]);
+    assert_true(fabs((double)with.T.v.v[1]) < 0.3);
+    assert_true(fabs((double)with.T.v.v[1]) < 3.0 * sqrt(vel_var(&with, 1)));
+    assert_true(vel_var(&with, 1) < 0.3 * 0.3);
+    assert_true(fabs((double)without.T.v.v[1] - 0.8) < 0.01);
+    assert_true(fabs((double)with.T.v.v[0] - 10.0) < 0.1);
+    assert_true(fabs(vel_var(&with, 0) / vel_var(&without, 0) - 1.0) < 0.01);
+}
+
+/* The NHC samples are a function of time alone: a run cut into two calls
+ * of the same samples, or started at another sample, applies them at the
+ * multiples of nhc_interval: 3 updates in (0, 3.5 s], 2 in (3.5, 5.5]. */
+static void test_nhc_at_whole_intervals(void **state)
+{
+    (void)state;
+    const double v0[3] = {10.0, 0.0, 0.0};
+    start_moving(0.3, v0, 0.1);
+    cruise(0, 700);
+    assert_int_equal(ins.c.nhc_used, 3);
+    cruise(700, 400);
+    assert_int_equal(ins.c.nhc_used, 5);
+}
+
+/* A fix stamped on a GNSS clock 0.2 s behind the IMU's, with
+ * gnss_time_offset 0.2 s, gives the state the same fix stamped on the
+ * IMU's clock gives without it, value for value. */
+static void test_gnss_time_offset_moves_the_fix(void **state)
+{
+    (void)state;
+    const double p[3] = {0.3, -0.2, 0.1};
+    se23_ins_config_t c;
+    se23_gauss_t g, a, b;
+    se23_ins_gnss_t fix;
+    int64_t t;
+    it_config(&c, 1);
+    c.gnss_time_offset = (se23_real_t)0.2;
+    for (int run = 0; run < 2; ++run) {
+        assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
+        it_initial(15, 1e-2, 0.1, 1.0, &g);
+        assert_int_equal(se23_ins_init(&ins, 0, &g), SE23_OK);
+        assert_int_equal(it_run_rest(&ins, NULL, NULL, 0, 0, 200), 200);
+        /* at 1 s on the IMU's clock */
+        it_fix(1000000000LL - (run == 0 ? 200000000LL : 0), p, 0.05, &fix);
+        assert_int_equal(se23_ins_gnss(&ins, &fix), SE23_INS_USED);
+        assert_int_equal(it_run_rest(&ins, NULL, NULL, 200 * IT_DT_NS, 200, 10), 10);
+        assert_int_equal(se23_ins_state(&ins, run == 0 ? &a : &b, &t), SE23_OK);
+        c.gnss_time_offset = SE23_R(0);
+    }
+    assert_memory_equal(&a.T, &b.T, sizeof a.T);
+    assert_memory_equal(&a.P, &b.P, sizeof a.P);
+    /* without the offset the same stamp is in the past: fused by replay,
+     * a different state */
+    c.gnss_time_offset = SE23_R(0);
+    assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
+    assert_int_equal(se23_ins_init(&ins, 0, &g), SE23_OK);
+    assert_int_equal(it_run_rest(&ins, NULL, NULL, 0, 0, 200), 200);
+    it_fix(800000000LL, p, 0.05, &fix);
+    assert_int_equal(se23_ins_gnss(&ins, &fix), SE23_INS_USED);
+    assert_int_equal(ins.c.gnss_delayed, 1);
+    /* a negative stamp stays refused whatever the offset */
+    c.gnss_time_offset = SE23_R(1);
+    assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
+    assert_int_equal(se23_ins_init(&ins, 0, &g), SE23_OK);
+    it_fix(-500000000LL, p, 0.05, &fix);
+    assert_int_equal(se23_ins_gnss(&ins, &fix), SE23_INS_NONFINITE);
+}
+
+/* A level body cruising at 10 m/s reads what a body at rest reads: the
+ * detector calls its windows stationary, and without rest_speed_max (nor
+ * the gravity test) the filter applies ZUPTs and loses the speed (the
+ * first ones' bias estimates then make the detector see motion); with it (0.5 m/s) it knows it
+ * is moving and applies none. */
+static void test_rest_speed_max_keeps_a_cruise_moving(void **state)
+{
+    (void)state;
+    se23_ins_config_t c;
+    se23_gauss_t g, out;
+    int64_t t;
+    for (int run = 0; run < 2; ++run) {
+        it_config(&c, 1);
+        c.rest_speed_max = (run == 0) ? SE23_R(0) : SE23_R(0.5);
+        c.gravity_test_off = 1; /* the speed test alone */
+        assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
+        it_initial(15, 1e-3, 0.05, 1.0, &g);
+        g.T.v.v[0] = SE23_R(10);
+        assert_int_equal(se23_ins_init(&ins, 0, &g), SE23_OK);
+        cruise(0, 400);
+        assert_int_equal(se23_ins_state(&ins, &out, &t), SE23_OK);
+        print_message("rest_speed_max %g: %u ZUPTs, v %.3f m/s\n", (double)c.rest_speed_max,
+                      ins.c.zupt_used, (double)out.T.v.v[0]);
+        if (run == 0) {
+            assert_true(ins.c.zupt_used >= 1);
+            assert_true((double)out.T.v.v[0] < 5.0);
+        } else {
+            assert_int_equal(ins.c.zupt_used, 0);
+            assert_true(fabs((double)out.T.v.v[0] - 10.0) < 0.01);
+        }
+    }
+}
+
+/* The car preset passes se23_ins_setup and its alignment se23_ins_align at
+ * rates from 50 Hz to 10 kHz (the detector window capped, the delay
+ * horizon fitted to the ring), the installation left to the caller
+ * (lever, mounting zero); other rates and latitudes are refused. */
+static void test_car_preset(void **state)
+{
+    (void)state;
+    const double rates[] = {50.0, 99.5, 100.0, 400.0, 1000.0, 10000.0};
+    se23_ins_config_t c;
+    se23_ins_align_t a;
+    for (size_t k = 0; k < sizeof rates / sizeof rates[0]; ++k) {
+        assert_int_equal(se23_ins_preset_car((se23_real_t)rates[k], (se23_real_t)0.7, &c, &a),
+                         SE23_OK);
+        assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
+        assert_int_equal(se23_ins_align(&ins, &a), SE23_OK);
+        assert_true(c.nhc_sigma > SE23_R(0) && c.earth_rotation == 1 && c.zupt == 1);
+        assert_true(c.detector.window >= 2 && c.detector.window <= SE23_STATIONARY_WMAX);
+        assert_true(a.course_speed > SE23_R(0));
+        for (int i = 0; i < 3; ++i) {
+            assert_true(c.lever_b.v[i] == SE23_R(0) && c.mount_bv.v[i] == SE23_R(0));
+        }
+    }
+    assert_int_equal(se23_ins_preset_car(SE23_R(49), SE23_R(0), &c, &a), SE23_ERR_DOMAIN);
+    assert_int_equal(se23_ins_preset_car((se23_real_t)NAN, SE23_R(0), &c, &a), SE23_ERR_DOMAIN);
+    assert_int_equal(se23_ins_preset_car(SE23_R(100), SE23_R(3), &c, &a), SE23_ERR_DOMAIN);
+#if SE23_CFG_ARG_CHECKS
+    assert_int_equal(se23_ins_preset_car(SE23_R(100), SE23_R(0), NULL, &a), SE23_ERR_NULL);
+    assert_int_equal(se23_ins_preset_car(SE23_R(100), SE23_R(0), &c, NULL), SE23_ERR_NULL);
+#endif
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_nhc_pulls_lateral_velocity_to_zero),
+        cmocka_unit_test(test_nhc_at_whole_intervals),
+        cmocka_unit_test(test_gnss_time_offset_moves_the_fix),
+        cmocka_unit_test(test_rest_speed_max_keeps_a_cruise_moving),
+        cmocka_unit_test(test_car_preset),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
