@@ -459,8 +459,12 @@ static int write_out(drive_t *d)
         fprintf(stderr, PROG ": no valid GNSS fix: nothing written\n");
         return 1;
     }
+    /* no --start: from the file's first record, also IMU before the first fix */
     lo = d->gnss.fix[0].t_ns + llround(o->start * 1e9);
     hi = o->duration > 0.0 ? lo + llround(o->duration * 1e9) : INT64_MAX;
+    if (o->start <= 0.0) {
+        lo = INT64_MIN;
+    }
     /* the cut: [lo, hi) of each stream */
     for (i0 = 0; i0 < d->imu.n && (d->seq[i0] == 0 || d->imu.row[i0].t_ns < lo); i0++) {
     }
@@ -476,7 +480,8 @@ static int write_out(drive_t *d)
     }
     if (j0 == j_end || i0 == i_end) {
         fprintf(stderr, PROG ": no %s in the part [%s, %s) s: nothing written\n",
-                j0 == j_end ? "GNSS fix" : "IMU sample", drive_fmt_s(lo, a, sizeof a),
+                j0 == j_end ? "GNSS fix" : "IMU sample",
+                lo == INT64_MIN ? "start" : drive_fmt_s(lo, a, sizeof a),
                 hi == INT64_MAX ? "end" : drive_fmt_s(hi, b, sizeof b));
         return 1;
     }

@@ -52,7 +52,7 @@
 
 typedef struct {
     const char *meta, *csv, *plots, *plot_script, *label, *pct_len_s;
-    double lever[3], skip, min_dist, max_gap;
+    double lever[3], skip, min_dist, max_gap, settle;
     double max_h50, max_h95, max_hmax, max_pct, max_beyond;
     int nees_band;
     int n_outages; /* from the command line (-1: the sidecar's) */
@@ -64,7 +64,7 @@ typedef struct {
 typedef struct {
     double t, t_rel;
     double ref[3], est[3], e[3], eh, sig[3], sig_h, nees;
-    int outage;     /* index, or -1 */
+    int outage;     /* index, or -1 (with GNSS), -2 (settling, --settle) */
     double t_in;    /* since the outage's start [s] (NaN outside) */
 } row_t2;
 
@@ -84,6 +84,9 @@ static void usage(FILE *f)
             "                         the sidecar's, i.e. the ones the importer applied)\n"
             "  --lever X,Y,Z          antenna w.r.t. the IMU, body frame [m] (0,0,0)\n"
             "  --skip S               score from S s after the first fix (0)\n"
+            "  --settle S             epochs within S s after an outage's end are neither\n"
+            "                         in it nor with GNSS: the filter takes its first fixes\n"
+            "                         back (1)\n"
             "  --min-distance M       outages shorter than M m along the reference are not\n"
             "                         scored in %% of distance (10)\n"
             "  --max-nav-gap S        reference epochs with no nav state within S s are\n"
@@ -188,6 +191,7 @@ static int parse_args(int argc, char **argv, opts_t *o, const char **imp, const 
         {"--meta", HOPT_STR, &o->meta, 0, 0, NULL},
         {"--lever", HOPT_VEC3, o->lever, -100.0, 100.0, NULL},
         {"--skip", HOPT_DOUBLE, &o->skip, 0.0, 1e7, NULL},
+        {"--settle", HOPT_DOUBLE, &o->settle, 0.0, 1e4, NULL},
         {"--min-distance", HOPT_DOUBLE, &o->min_dist, 0.0, 1e9, NULL},
         {"--max-nav-gap", HOPT_DOUBLE, &o->max_gap, 1e-3, 1e3, NULL},
         {"--csv", HOPT_STR, &o->csv, 0, 0, NULL},
@@ -207,6 +211,7 @@ static int parse_args(int argc, char **argv, opts_t *o, const char **imp, const 
     }
     o->min_dist = 10.0;
     o->max_gap = 0.5;
+    o->settle = 1.0;
     o->plot_script = "tools/drive/plot_drive.py";
     rc = take_outages(&argc, argv, o);
     if (rc == 0) {
@@ -391,6 +396,33 @@ static int score(const opts_t *o, const log_data_t *d, const se23lcm_gnss_fix *m
     return 0;
 }
 
+/* Leaves out nav states with a NaN/Inf in R, v, p, P or a negative
+ * variance of position or attitude; returns how many. */
+static size_t screen_nav(log_data_t *d)
+{
+    size_t i, w = 0;
+    for (i = 0; i < d->n_nav; i++) {
+        const se23lcm_nav_state *s = &d->nav[i];
+        int k, ok = 1;
+        for (k = 0; k < 9 && ok; k++) {
+            ok = isfinite(s->R_nb[k]);
+        }
+        for (k = 0; k < 3 && ok; k++) {
+            ok = isfinite(s->p_n[k]) && isfinite(s->v_n[k]) && s->P[16 * k] >= 0.0 &&
+                 s->P[16 * (6 + k)] >= 0.0;
+        }
+        for (k = 0; k < 225 && ok; k++) {
+            ok = isfinite(s->P[k]);
+        }
+        if (ok) {
+            d->nav[w++] = *s;
+        }
+    }
+    i = d->n_nav - w;
+    d->n_nav = w;
+    return i;
+}
+
 static int cmp_d(const void *a, const void *b)
 {
     const double x = *(const double *)a, y = *(const double *)b;
@@ -486,7 +518,7 @@ int main(int argc, char **argv)
     char *mp = NULL;
     log_data_t d;
     se23lcm_gnss_fix *ref = NULL;
-    size_t n_ref = 0, i, n_rows = 0, n_aided = 0, n_beyond = 0, n_nees = 0, n_uncovered = 0;
+    size_t n_settle = 0, n_nav_bad = 0, n_ref = 0, i, n_rows = 0, n_aided = 0, n_beyond = 0, n_nees = 0, n_uncovered = 0;
     row_t2 *rows = NULL;
     outage_t out[DRIVE_OUTAGES_MAX];
     double *tmp = NULL, (*ol)[2], nees_sum = 0.0;
@@ -519,13 +551,17 @@ int main(int argc, char **argv)
         ol = meta.outage;
     }
     first_ns = llround(meta.first_fix_s * 1e9);
-    d.screen = 1;
+    /* logread's screening knows the status bits of its day (0x1ff) and
+     * would leave out states with newer ones: screened here instead, for
+     * what the scoring uses (finite pose and covariance) */
+    d.screen = 0;
     if (read_ref(imp, &ref, &n_ref) != 0 || log_read(navp, &d) != 0) {
         free(ref);
         log_free(&d);
         return 1;
     }
     log_sort(&d);
+    n_nav_bad = screen_nav(&d);
     if (n_ref == 0 || d.n_nav == 0) {
         fprintf(stderr, PROG ": %s: %s\n", n_ref == 0 ? imp : navp,
                 n_ref == 0 ? "no reference epoch (SE23_GNSS_REF)" : "no nav state (SE23_NAV)");
@@ -552,6 +588,11 @@ int main(int argc, char **argv)
         int64_t before = INT64_MAX;
         if (t_rel < o.skip) {
             continue;
+        }
+        for (k = 0; k < n_out; k++) {
+            if (in == -1 && t_rel >= ol[k][0] + ol[k][1] && t_rel < ol[k][0] + ol[k][1] + o.settle) {
+                in = -2; /* settling after the outage (--settle) */
+            }
         }
         for (k = 0; k < n_out; k++) {
             if (t_rel >= ol[k][0] && t_rel < ol[k][0] + ol[k][1]) {
@@ -595,7 +636,8 @@ int main(int argc, char **argv)
     }
     /* with GNSS */
     for (i = 0; i < n_rows; i++) {
-        if (rows[i].outage < 0) {
+        n_settle += rows[i].outage == -2;
+        if (rows[i].outage == -1) {
             tmp[n_aided++] = rows[i].eh;
             if (isfinite(rows[i].nees)) {
                 nees_sum += rows[i].nees;
@@ -609,9 +651,9 @@ int main(int argc, char **argv)
            o.label != NULL ? o.label : "", o.label != NULL ? " " : "", navp, n_ref, n_rows,
            d.n_nav, n_uncovered, o.skip > 0 ? " or skipped" : "", o.lever[0], o.lever[1],
            o.lever[2]);
-    if (d.nav_rejected[0] > 0) {
-        printf(PROG ": %lld nav states left out by the screening (logread.h)\n",
-               (long long)d.nav_rejected[0]);
+    if (n_nav_bad > 0) {
+        printf(PROG ": %zu nav states left out: a NaN/Inf, or a negative position variance\n",
+               n_nav_bad);
     }
     {
         const double h50 = n_aided ? median(tmp, n_aided) : NAN;
@@ -623,8 +665,9 @@ int main(int argc, char **argv)
         const double hi = n_nees ? kk * pow(a + Z99 * b, 3) / (double)n_nees : NAN;
         const double mean = n_nees ? nees_sum / (double)n_nees : NAN;
         const double beyond = n_nees ? (double)n_beyond / (double)n_nees : NAN;
-        printf(PROG ": with GNSS (%zu epochs outside the outages): horizontal error median %.3f "
-               "m, 95%% %.3f m, max %.3f m\n", n_aided, h50, h95, hmax);
+        printf(PROG ": with GNSS (%zu epochs outside the outages, %zu settling within %.1f s after "
+               "one): horizontal error median %.3f m, 95%% %.3f m, max %.3f m\n",
+               n_aided, n_settle, o.settle, h50, h95, hmax);
         printf(PROG ": with GNSS: position NEES (3 dof) mean %.2f, chi2 99%% band of the mean of "
                "%zu epochs [%.2f, %.2f] (%s; epochs taken as independent); %.1f%% of epochs "
                "beyond chi2(3, 0.99) = %.2f (1%% expected)\n",
