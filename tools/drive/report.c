@@ -52,7 +52,7 @@
 
 typedef struct {
     const char *meta, *csv, *plots, *plot_script, *label, *pct_len_s;
-    double lever[3], skip, min_dist, max_gap, settle;
+    double lever[3], skip, min_dist, max_gap, settle, max_speed;
     double max_h50, max_h95, max_hmax, max_pct, max_beyond;
     int nees_band;
     int n_outages; /* from the command line (-1: the sidecar's) */
@@ -89,6 +89,8 @@ static void usage(FILE *f)
             "                         back (1)\n"
             "  --min-distance M       outages shorter than M m along the reference are not\n"
             "                         scored in %% of distance (10)\n"
+            "  --max-ref-speed V      reference steps faster than V m/s are glitches, left\n"
+            "                         out of the distances driven (70)\n"
             "  --max-nav-gap S        reference epochs with no nav state within S s are\n"
             "                         skipped (0.5)\n"
             "  --csv FILE             every reference epoch scored, one row each; the\n"
@@ -192,6 +194,7 @@ static int parse_args(int argc, char **argv, opts_t *o, const char **imp, const 
         {"--lever", HOPT_VEC3, o->lever, -100.0, 100.0, NULL},
         {"--skip", HOPT_DOUBLE, &o->skip, 0.0, 1e7, NULL},
         {"--settle", HOPT_DOUBLE, &o->settle, 0.0, 1e4, NULL},
+        {"--max-ref-speed", HOPT_DOUBLE, &o->max_speed, 1.0, 1e6, NULL},
         {"--min-distance", HOPT_DOUBLE, &o->min_dist, 0.0, 1e9, NULL},
         {"--max-nav-gap", HOPT_DOUBLE, &o->max_gap, 1e-3, 1e3, NULL},
         {"--csv", HOPT_STR, &o->csv, 0, 0, NULL},
@@ -212,6 +215,7 @@ static int parse_args(int argc, char **argv, opts_t *o, const char **imp, const 
     o->min_dist = 10.0;
     o->max_gap = 0.5;
     o->settle = 1.0;
+    o->max_speed = 70.0;
     o->plot_script = "tools/drive/plot_drive.py";
     rc = take_outages(&argc, argv, o);
     if (rc == 0) {
@@ -518,7 +522,8 @@ int main(int argc, char **argv)
     char *mp = NULL;
     log_data_t d;
     se23lcm_gnss_fix *ref = NULL;
-    size_t n_settle = 0, n_nav_bad = 0, n_ref = 0, i, n_rows = 0, n_aided = 0, n_beyond = 0, n_nees = 0, n_uncovered = 0;
+    size_t n_jumps = 0, n_settle = 0, n_nav_bad = 0, n_ref = 0, i, n_rows = 0, n_aided = 0;
+    size_t n_beyond = 0, n_nees = 0, n_uncovered = 0;
     row_t2 *rows = NULL;
     outage_t out[DRIVE_OUTAGES_MAX];
     double *tmp = NULL, (*ol)[2], nees_sum = 0.0;
@@ -622,7 +627,12 @@ int main(int argc, char **argv)
                 continue;
             }
             if (prev != NULL) {
-                out[k].dist += hypot(r->ref[0] - prev->ref[0], r->ref[1] - prev->ref[1]);
+                const double step = hypot(r->ref[0] - prev->ref[0], r->ref[1] - prev->ref[1]);
+                if (step <= o.max_speed * (r->t - prev->t)) {
+                    out[k].dist += step;
+                } else {
+                    n_jumps++;
+                }
             }
             out[k].err_max = r->eh > out[k].err_max ? r->eh : out[k].err_max;
             out[k].n_epochs++;
@@ -651,6 +661,10 @@ int main(int argc, char **argv)
            o.label != NULL ? o.label : "", o.label != NULL ? " " : "", navp, n_ref, n_rows,
            d.n_nav, n_uncovered, o.skip > 0 ? " or skipped" : "", o.lever[0], o.lever[1],
            o.lever[2]);
+    if (n_jumps > 0) {
+        printf(PROG ": %zu reference steps in outages faster than %.0f m/s (glitches) left out of "
+               "the distances\n", n_jumps, o.max_speed);
+    }
     if (n_nav_bad > 0) {
         printf(PROG ": %zu nav states left out: a NaN/Inf, or a negative position variance\n",
                n_nav_bad);
