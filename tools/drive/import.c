@@ -546,8 +546,7 @@ static int write_out(drive_t *d)
                 n_out++;
                 continue;
             }
-            if (!(x->sp[0] > 0 || o->sigma_floor[0] > 0) || !(x->sp[1] > 0 || o->sigma_floor[0] > 0) ||
-                !(x->sp[2] > 0 || o->sigma_floor[0] > 0)) {
+            if (o->sigma_floor[0] <= 0 && !(x->sp[0] > 0 && x->sp[1] > 0 && x->sp[2] > 0)) {
                 n_nosig++;
                 continue;
             }

@@ -595,7 +595,8 @@ int main(int argc, char **argv)
             continue;
         }
         for (k = 0; k < n_out; k++) {
-            if (in == -1 && t_rel >= ol[k][0] + ol[k][1] && t_rel < ol[k][0] + ol[k][1] + o.settle) {
+            const double end = ol[k][0] + ol[k][1];
+            if (in == -1 && t_rel >= end && t_rel < end + o.settle) {
                 in = -2; /* settling after the outage (--settle) */
             }
         }
@@ -694,7 +695,8 @@ int main(int argc, char **argv)
             fail = 1;
         }
         if (o.max_h95 > 0 && !(h95 <= o.max_h95)) {
-            printf(PROG ": FAIL: 95%% horizontal error with GNSS %.3f m > %.3f m\n", h95, o.max_h95);
+            printf(PROG ": FAIL: 95%% horizontal error with GNSS %.3f m > %.3f m\n", h95,
+                   o.max_h95);
             fail = 1;
         }
         if (o.max_hmax > 0 && !(hmax <= o.max_hmax)) {
