@@ -249,10 +249,11 @@ static void sincos_lat(int64_t lat_abs, dreal_t *s, dreal_t *c)
 
 static int64_t abs64(int64_t x) { return (x < 0) ? -x : x; }
 
+/* Valid latitude, longitude, height (no arithmetic on unchecked integers). */
 static int geo_valid(const se23_geo_t *g)
 {
-    return (abs64(g->lat_e9) <= SE23_GEO_LAT_MAX_E9) &&
-           (abs64(g->lon_e9) <= SE23_GEO_LON_MAX_E9) &&
+    return (g->lat_e9 >= -SE23_GEO_LAT_MAX_E9) && (g->lat_e9 <= SE23_GEO_LAT_MAX_E9) &&
+           (g->lon_e9 >= -SE23_GEO_LON_MAX_E9) && (g->lon_e9 <= SE23_GEO_LON_MAX_E9) &&
            (g->h_mm >= -SE23_GEO_H_MAX_MM) && (g->h_mm <= SE23_GEO_H_MAX_MM);
 }
 
@@ -456,7 +457,8 @@ se23_status_t se23_geo_to_ned(const se23_geo_frame_t *frame, const se23_geo_t *f
 static int64_t round64(se23_real_t x)
 {
     const se23_real_t half = (x < SE23_R(0)) ? SE23_R(-0.5) : SE23_R(0.5);
-    return (int64_t)(x + half);
+    const se23_real_t xr = x + half;
+    return (int64_t)xr;
 }
 
 /* x clamped to [-lim, lim]. */
