@@ -31,9 +31,13 @@
  *    longitude is the tighter east-west limit.
  * Accuracy of se23_geo_to_ned against the exact ECEF route (measured by
  * tests/unit/test_geodetic.c and the Eigen cross-check): float build
- * <= 1 mm within 10 km, <= 5 mm (the output's own float spacing is 7.8 mm)
- * within 100 km; double build <= 1e-6 m. se23_geo_from_ned returns the
- * integer fix within one unit (1e-9 deg, 1 mm) of the exact inverse.
+ * within ~0.6 of the float spacing of the largest component: 0.5 mm within
+ * 10 km, 4.8 mm within 100 km (spacing 7.8 mm; tested bounds 1 mm and
+ * 6 mm), 7.8 mm within 150 km; double build ~1e-11 m (tested 1e-9 m).
+ * se23_geo_from_ned returns the integer fix within one unit (1e-9 deg,
+ * 1 mm) of the exact inverse of p_n in the double build; in float p_n
+ * itself carries up to half its spacing (3.9 mm at 100 km, ~70 units of
+ * 1e-9 deg).
  *
  * Functions index:
  *   se23_geo_origin     precompute the frame at an origin

@@ -30,7 +30,7 @@ static const long double A_L = 6378137.0L;
 #define TOL_100KM 1e-6
 #else
 #define TOL_10KM 1e-3
-#define TOL_100KM 5e-3
+#define TOL_100KM 6e-3
 #endif
 
 static long double e2_l(void)
