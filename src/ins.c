@@ -82,7 +82,7 @@ static se23_status_t config_check(const se23_ins_config_t *cfg)
         cfg->zupt_sigma_v, cfg->zaru_sigma_w, cfg->zaru_after, cfg->floor_sigma,
         cfg->floor_step, cfg->floor_swing, cfg->motion.gyro_scale, cfg->motion.accel_scale,
         cfg->motion.gyro_g, cfg->motion.corr_time, cfg->zupt_lever, cfg->nhc_sigma,
-        cfg->nhc_interval, cfg->rest_speed_max};
+        cfg->nhc_interval, cfg->rest_speed_max, cfg->rest_accel_sigma};
     const se23_real_t signed_reals[] = {
         cfg->lat, cfg->lever_b.v[0], cfg->lever_b.v[1], cfg->lever_b.v[2],
         cfg->mount_bv.v[0], cfg->mount_bv.v[1], cfg->mount_bv.v[2], cfg->gnss_time_offset};

@@ -214,7 +214,14 @@ se23_status_t se23_ins_preset_car(se23_real_t rate_hz, se23_real_t lat,
      * 0.5 m/s, a creep). At rest the car rocks on its suspension by a few
      * mm/s, the same over a window: 2 cm/s per window, sqrt(W) per sample
      * (as the foot preset). ZARU after 1 s at rest, 1-sigma 3 deg/s per
-     * sample: the idling vibration, white from sample to sample. */
+     * sample: the idling vibration, white from sample to sample. A pull
+     * away from rest is gentle enough (1-3 m/s^2) to pass so wide a
+     * detector, so the gravity test decides: the vibration averages out of
+     * a window's mean acceleration (an idling engine's 10-30 Hz over 0.3
+     * s: to a few % of its amplitude, under 0.1 m/s^2) and a standing car
+     * rocks on its suspension by less; with that 1-sigma
+     * (rest_accel_sigma 0.1 m/s^2) a car that pulls away is moving within
+     * its first window. */
     c.zupt = 1;
     {
         const se23_real_t w = (SE23_R(0.3) * rate_hz) + SE23_R(0.5);
@@ -226,6 +233,7 @@ se23_status_t se23_ins_preset_car(se23_real_t rate_hz, se23_real_t lat,
     c.detector.gravity = g;
     c.detector.threshold = se23_ins_detector_threshold(c.detector.window, Z_099);
     c.rest_speed_max = SE23_R(0.5);
+    c.rest_accel_sigma = SE23_R(0.1);
     c.zupt_sigma_v = SE23_R(0.02) * se23_sqrt((se23_real_t)c.detector.window);
     c.zaru_sigma_w = SE23_R(3) * DEG;
     c.zaru_after = SE23_R(1);

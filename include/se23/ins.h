@@ -108,8 +108,8 @@
  * any fix within the horizon has a snapshot before it. Fusing a fix stamped
  * d seconds late costs the replay of up to d + delay_horizon seconds of
  * samples (prediction and the zero-velocity updates), in that call.
- * Memory: sizeof(se23_ins_t) = 17,928 B + SE23_INS_RING x 72 B in double,
- * 9,200 B + SE23_INS_RING x 48 B in float (27,144 / 15,344 B with the
+ * Memory: sizeof(se23_ins_t) = 17,936 B + SE23_INS_RING x 72 B in double,
+ * 9,208 B + SE23_INS_RING x 48 B in float (27,152 / 15,352 B with the
  * default ring; README "The navigation filter"; test_ins.c asserts it),
  * the kernels' work areas included (1,512 / 756 B, kept here and not on
  * the stack of the calls);
@@ -126,14 +126,19 @@
  * the gravity direction from the window, a start whose acceleration grows
  * smoothly from zero would pass it; the filter knows where gravity is and
  * also requires the window's mean acceleration R fbar + g to be noise
- * (src/ins_rest.c, accel_nis), unless gravity_test_off is set: a
+ * (src/ins_rest.c, accel_nis; the mean's 1-sigma is rest_accel_sigma, or
+ * sigma_a / sqrt(W) for white noise: a vibration that the detector's
+ * sigma_a must allow averages out of the mean), unless gravity_test_off is
+ * set: a
  * foot has no smooth starts (a swing begins with a heel lift at over
  * 100 deg/s, which SHOE's gyro term sees), and a test against the
  * filter's own attitude would keep a filter that missed one stance from
  * every later one. With rest_speed_max > 0 the filter's own speed must
- * also allow rest: |v|^2 <= rest_speed_max^2 + 9 tr(P_nu) (a vehicle's
- * IMU reads the same at rest and cruising at a steady speed on a smooth
- * road; only the filter knows which). While the window is stationary, each
+ * also allow rest, |v| <= rest_speed_max (a vehicle's IMU reads the same
+ * at rest and cruising at a steady speed on a smooth road; only the filter
+ * knows which; no margin for the speed's uncertainty, which a long outage
+ * widens past a car's speeds: a missed ZUPT is a lost help, a false one a
+ * catastrophe). While the window is stationary, each
  * sample applies v = 0 (nav frame, 1-sigma sqrt(zupt_sigma_v^2 + W
  * (zupt_lever |w|)^2), w = w_meas + b_g: a body at rest that still turns
  * at w about a point zupt_lever away, a foot rolling over its heel or toe,
@@ -393,9 +398,12 @@ typedef struct {
     se23_stationary_config_t detector; /**< window, noise, threshold (stationary.h) */
     int gravity_test_off;       /**< 1: no mean-acceleration test at rest ("Zero-velocity updates") */
     se23_real_t zupt_sigma_v;   /**< 1-sigma of v = 0 at rest [m/s] */
+    se23_real_t rest_accel_sigma; /**< 1-sigma of a window's mean acceleration at rest
+                                   *   [m/s^2] in the gravity test ("Zero-velocity
+                                   *   updates"; 0: sigma_a / sqrt(window)) */
     se23_real_t rest_speed_max; /**< a stationary window is rest only if the filter's
-                                 *   speed is within this [m/s] plus 3 sigma
-                                 *   ("Zero-velocity updates"; 0: no test) */
+                                 *   speed is at most this [m/s] ("Zero-velocity
+                                 *   updates"; 0: no test) */
     se23_real_t zupt_lever;     /**< distance [m] from the point a body at rest turns
                                  *   about: the ZUPT's 1-sigma grows with the rate
                                  *   ("Zero-velocity updates"; 0: constant) */

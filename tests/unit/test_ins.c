@@ -96,6 +96,7 @@ static void m_nhc_long_interval(se23_ins_config_t *c)
 }
 static void m_offset_big(se23_ins_config_t *c) { c->gnss_time_offset = SE23_R(-1.01); }
 static void m_rest_speed_neg(se23_ins_config_t *c) { c->rest_speed_max = SE23_R(-0.5); }
+static void m_rest_accel_nan(se23_ins_config_t *c) { c->rest_accel_sigma = (se23_real_t)NAN; }
 
 /* The filter's RAM as ins.h and the README state it (a firmware's budget):
  * a fixed part plus the ring of SE23_INS_RING samples. */
@@ -104,10 +105,10 @@ static void test_ins_memory_is_as_documented(void **state)
     (void)state;
 #if SE23_CFG_DOUBLE
     assert_int_equal(sizeof(se23_ins_hist_t), 72);
-    assert_int_equal(sizeof(se23_ins_t), 17928 + SE23_INS_RING * 72);
+    assert_int_equal(sizeof(se23_ins_t), 17936 + SE23_INS_RING * 72);
 #else
     assert_int_equal(sizeof(se23_ins_hist_t), 48);
-    assert_int_equal(sizeof(se23_ins_t), 9200 + SE23_INS_RING * 48);
+    assert_int_equal(sizeof(se23_ins_t), 9208 + SE23_INS_RING * 48);
 #endif
 }
 
@@ -143,6 +144,7 @@ static void test_setup_rejects_each_bad_field_and_writes_nothing(void **state)
         {m_nhc_long_interval, SE23_ERR_DOMAIN},
         {m_offset_big, SE23_ERR_DOMAIN},
         {m_rest_speed_neg, SE23_ERR_DOMAIN},
+        {m_rest_accel_nan, SE23_ERR_NONFINITE},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
         se23_ins_config_t c;

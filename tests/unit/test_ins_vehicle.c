@@ -3,7 +3,7 @@
  * (at the same samples in every run) pulls a wrong lateral velocity to
  * zero and leaves the forward one alone; the GNSS time offset fuses a fix
  * as if stamped on the IMU's clock; rest_speed_max keeps a steady cruise
- * from passing for rest; the car preset passes setup at any rate it
+ * from passing for rest, rest_accel_sigma a car that pulls away; the car preset passes setup at any rate it
  * accepts and refuses the others. */
 #include <math.h>
 #include <setjmp.h>
@@ -176,6 +176,51 @@ static void test_rest_speed_max_keeps_a_cruise_moving(void **state)
     }
 }
 
+/* A car pulling away at 1 m/s^2 after 2 s at rest, under a detector wide
+ * enough for an idling engine's vibration (sigma_a 1.5 m/s^2, which the
+ * pull passes): with the gravity test's 1-sigma at white noise's
+ * sigma_a / sqrt(W) (0.34 m/s^2) the ZUPTs hold it still for seconds; with
+ * rest_accel_sigma 0.1 m/s^2 none is applied after the first window of
+ * motion and the speed after 3 s is the truth's 3 m/s. */
+static void test_rest_accel_sigma_lets_a_car_pull_away(void **state)
+{
+    (void)state;
+    const double g = it_gravity();
+    se23_ins_config_t c;
+    se23_gauss_t init, out;
+    int64_t t;
+    for (int run = 0; run < 2; ++run) {
+        uint32_t zupt_at_start = 0;
+        it_config(&c, 1);
+        c.detector.sigma_a = SE23_R(1.5);
+        c.rest_accel_sigma = (run == 0) ? SE23_R(0) : SE23_R(0.1);
+        assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
+        it_initial(15, 1e-3, 0.01, 1.0, &init);
+        assert_int_equal(se23_ins_init(&ins, 0, &init), SE23_OK);
+        for (int k = 1; k <= 5 * 200; ++k) {
+            se23_vec3_t w = {{0, 0, 0}}, f = {{0, 0, (se23_real_t)-g}};
+            if (k > 2 * 200) {
+                f.v[0] = SE23_R(1); /* level, pulling away along x */
+            }
+            if (k == 2 * 200 + 40) { /* 0.2 s into the motion: a window's worth */
+                zupt_at_start = ins.c.zupt_used;
+            }
+            assert_int_equal(se23_ins_imu(&ins, k * IT_DT_NS, k, &w, &f), SE23_INS_USED);
+        }
+        assert_int_equal(se23_ins_state(&ins, &out, &t), SE23_OK);
+        print_message("rest_accel_sigma %g: %u ZUPTs in motion, speed %.3f m/s (truth 3)\n",
+                      (double)c.rest_accel_sigma, ins.c.zupt_used - zupt_at_start,
+                      (double)out.T.v.v[0]);
+        if (run == 0) {
+            assert_true(ins.c.zupt_used - zupt_at_start > 100);
+            assert_true((double)out.T.v.v[0] < 2.0);
+        } else {
+            assert_int_equal(ins.c.zupt_used, zupt_at_start);
+            assert_true(fabs((double)out.T.v.v[0] - 3.0) < 0.05);
+        }
+    }
+}
+
 /* The car preset passes se23_ins_setup and its alignment se23_ins_align at
  * rates from 50 Hz to 10 kHz (the detector window capped, the delay
  * horizon fitted to the ring), the installation left to the caller
@@ -214,6 +259,7 @@ int main(void)
         cmocka_unit_test(test_nhc_at_whole_intervals),
         cmocka_unit_test(test_gnss_time_offset_moves_the_fix),
         cmocka_unit_test(test_rest_speed_max_keeps_a_cruise_moving),
+        cmocka_unit_test(test_rest_accel_sigma_lets_a_car_pull_away),
         cmocka_unit_test(test_car_preset),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
