@@ -48,11 +48,14 @@ H_HDRS := $(wildcard tools/lcm/*.h tools/sim/*.h tools/ins/*.h tools/report/*.h 
 H_LIB := $(BUILD)/lib-host-double/libse23.a
 h_objs = $(patsubst %.c,$(H)/obj/%.o,$(1))
 
+include tools/drive/drive.mk
+
 .PHONY: harness demo demo-live demo-walk walk walk-corpus walk-misalign walk-sim bench-ins soak
 
 harness: $(H_BIN)/se23-sim $(H_BIN)/se23-ins $(H_BIN)/se23-report $(H_BIN)/se23-corrupt \
          $(H_BIN)/se23-simcheck $(H_BIN)/se23-walk $(H_BIN)/se23-ins-float \
-         $(H_BIN)/se23-import $(H_BIN)/se23-importcheck $(H_BIN)/se23-soak $(H_BIN)/se23-soak-float
+         $(H_BIN)/se23-import $(H_BIN)/se23-importcheck $(H_BIN)/se23-soak $(H_BIN)/se23-soak-float \
+         drive-tools
 
 $(H_GEN)/.stamp: $(LCM_TYPES)
 	@mkdir -p $(H_GEN)
