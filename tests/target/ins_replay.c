@@ -11,10 +11,11 @@
  *  - within the tolerances below: R, v, p, the biases, the diagonal of P
  *    (relative), and the last factor's Deltas, Delta t and diagonal of P
  *    (relative).
- * Then the two stateless functions of ins.h, se23_ins_preset_foot and
- * se23_ins_detector_threshold, on a few inputs (two of them error cases)
- * against the host's double results: statuses and integers exactly, reals
- * to PRESET_TOL relative.
+ * Then the stateless functions of ins.h, se23_ins_preset_foot,
+ * se23_ins_preset_car and se23_ins_detector_threshold, on a few inputs
+ * (two error cases per preset) against the host's double results: statuses
+ * and integers exactly, reals (every field of the configuration and the
+ * alignment request, insr_flatten) to PRESET_TOL relative.
  * Prints one line per checkpoint, one for the presets and the worst
  * deviation of each quantity over the run; exits with the number of failed
  * checkpoints and calls (capped at INSR_EXIT_MAX; 254/255 are the port's
@@ -167,23 +168,29 @@ static int check(const insr_seq_t *s, const insr_check_t *o, const insr_check_t 
 #define PRESET_TOL 1e-6
 #endif
 
-/* se23_ins_preset_foot and se23_ins_detector_threshold against the host;
- * returns the number of failed calls. */
+/* se23_ins_preset_foot, se23_ins_preset_car and se23_ins_detector_threshold
+ * against the host; returns the number of failed calls. */
 static int check_presets(void)
 {
     static se23_ins_config_t cfg; /* static: kept off the stack */
     se23_ins_align_t al;
     double worst = 0.0;
-    int fails = 0, same = 1, k;
+    int fails = 0, same = 1, n_car = 0, k;
     for (k = 0; k < insr_n_presets; ++k) {
         const insr_preset_t *p = &insr_presets[k];
+        const char *name = p->car != 0 ? "se23_ins_preset_car" : "se23_ins_preset_foot";
         int bad, st;
         memset(&cfg, 0, sizeof cfg);
         memset(&al, 0, sizeof al);
-        st = (int)se23_ins_preset_foot(p->rate_hz, p->lat, &cfg, &al);
+        if (p->car != 0) {
+            st = (int)se23_ins_preset_car(p->rate_hz, p->lat, &cfg, &al);
+            ++n_car;
+        } else {
+            st = (int)se23_ins_preset_foot(p->rate_hz, p->lat, &cfg, &al);
+        }
         if (st != p->status) {
-            printf("FAIL se23_ins_preset_foot(%g, %g): status %d, expected %d\n",
-                   (double)p->rate_hz, (double)p->lat, st, p->status);
+            printf("FAIL %s(%g, %g): status %d, expected %d\n", name, (double)p->rate_hz,
+                   (double)p->lat, st, p->status);
             ++fails;
             continue;
         }
@@ -192,8 +199,8 @@ static int check_presets(void)
         }
         bad = insr_config_diff(&cfg, &al, &p->cfg, &p->align, PRESET_TOL, &worst, &same);
         if (bad != 0) {
-            printf("FAIL se23_ins_preset_foot(%g, %g): %d field(s) differ\n",
-                   (double)p->rate_hz, (double)p->lat, bad);
+            printf("FAIL %s(%g, %g): %d field(s) differ\n", name, (double)p->rate_hz,
+                   (double)p->lat, bad);
             ++fails;
         }
     }
@@ -208,9 +215,10 @@ static int check_presets(void)
             ++fails;
         }
     }
-    printf("presets   %d se23_ins_preset_foot, %d se23_ins_detector_threshold calls  worst "
-           "%.2e relative (tol %.0e)  %s\n",
-           insr_n_presets, insr_n_thresholds, worst, PRESET_TOL, fails != 0 ? "FAIL" : "ok");
+    printf("presets   %d se23_ins_preset_foot, %d se23_ins_preset_car, %d "
+           "se23_ins_detector_threshold calls  worst %.2e relative (tol %.0e)  %s\n",
+           insr_n_presets - n_car, n_car, insr_n_thresholds, worst, PRESET_TOL,
+           fails != 0 ? "FAIL" : "ok");
     return fails;
 }
 

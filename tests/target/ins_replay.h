@@ -40,7 +40,7 @@ typedef struct {
 } insr_factor_t;
 
 /** Number of counters (se23_ins_counters_t is uint32_t fields only). */
-#define INSR_N_COUNTERS 29
+#define INSR_N_COUNTERS 30
 /** Index of counter `field` of se23_ins_counters_t in insr_check_t.c. */
 #define INSR_CIDX(field) ((int)(offsetof(se23_ins_counters_t, field) / sizeof(uint32_t)))
 
@@ -79,13 +79,15 @@ typedef struct {
 extern const insr_seq_t insr_seqs[];
 extern const int insr_n_seqs;
 
-/** A call of se23_ins_preset_foot(rate_hz, lat) and its reference outputs
- *  (cfg, align on SE23_OK). */
+/** A call of se23_ins_preset_foot(rate_hz, lat), or of
+ *  se23_ins_preset_car if car is nonzero, and its reference outputs (cfg,
+ *  align on SE23_OK). */
 typedef struct {
     se23_real_t rate_hz, lat;
     int status;
     se23_ins_config_t cfg;
     se23_ins_align_t align;
+    int car;
 } insr_preset_t;
 
 /** A call of se23_ins_detector_threshold(window, z) and its reference. */
@@ -100,7 +102,7 @@ extern const insr_threshold_t insr_thresholds[];
 extern const int insr_n_thresholds;
 
 /** Reals and integers of a configuration with its alignment request. */
-#define INSR_FLAT_REALS 45
+#define INSR_FLAT_REALS 52
 #define INSR_FLAT_INTS 8
 
 /** r, iv = every real and every integer field of c and a, in a fixed

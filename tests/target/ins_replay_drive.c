@@ -164,7 +164,9 @@ void insr_flatten(const se23_ins_config_t *c, const se23_ins_align_t *a,
         a->p_n.v[0], a->p_n.v[1], a->p_n.v[2], a->sigma_p,
         a->yaw, a->sigma_yaw, a->sigma_v, a->sigma_bg, a->sigma_ba, a->duration,
         a->course_speed, a->course_sigma, c->motion.gyro_scale, c->motion.accel_scale,
-        c->motion.gyro_g, c->motion.corr_time, c->zupt_lever};
+        c->motion.gyro_g, c->motion.corr_time, c->zupt_lever, c->rest_speed_max,
+        c->mount_bv.v[0], c->mount_bv.v[1], c->mount_bv.v[2], c->nhc_sigma, c->nhc_interval,
+        c->gnss_time_offset};
     const int ints[INSR_FLAT_INTS] = {c->earth_rotation, c->bias_states, c->gate_recover,
                                       c->zupt, c->detector.window, a->gyrocompass,
                                       c->gravity_test_off, a->measure_noise};
@@ -178,7 +180,7 @@ const char *const insr_counter_name[INSR_N_COUNTERS] = {
     "imu_missing",    "imu_seq_jumps",  "gnss_used",   "gnss_delayed", "gnss_pending_dropped",
     "gnss_nonfinite", "gnss_early",  "gnss_stale",  "gnss_gated",     "gate_resets",
     "gnss_failed",    "course_headings", "zupt_used",  "zaru_used",   "floor_used",
-    "floor_levels",   "time_resets",    "filter_errors", "init_rejected"};
+    "floor_levels",   "nhc_used",       "time_resets",    "filter_errors", "init_rejected"};
 
 /* se23_ins_counters_t must be exactly the INSR_N_COUNTERS uint32_t named above. */
 typedef char insr_counters_are_uint32[(sizeof(se23_ins_counters_t) ==

@@ -27,11 +27,12 @@
  * work area on its stack; the filter calls them in ins_replay), and the
  * navigation filter's se23_ins_setup, se23_ins_init,
  * se23_ins_align, se23_ins_imu, se23_ins_gnss, se23_ins_state,
- * se23_ins_take_factor, se23_ins_preset_foot and se23_ins_detector_threshold
- * (by the image ins_replay of tests/target, which runs recorded sequences
- * through the filter and compares with the host's double run at
- * checkpoints, and compares the preset and the threshold with the host's
- * on a few inputs; sequences and reference from tools/target/gen_ins_replay).
+ * se23_ins_take_factor, se23_ins_preset_foot, se23_ins_preset_car and
+ * se23_ins_detector_threshold (by the image ins_replay of tests/target,
+ * which runs recorded sequences through the filter and compares with the
+ * host's double run at checkpoints, and compares the presets and the
+ * threshold with the host's on a few inputs, every field of the
+ * configuration; sequences and reference from tools/target/gen_ins_replay).
  */
 #include "se23/earth.h"
 #include "se23/gauss.h"

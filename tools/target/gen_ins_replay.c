@@ -513,10 +513,15 @@ static void print_seq(int s, const gen_seq_t *g)
     printf("};\n");
 }
 
-/* The calls of the presets compared on the target: valid rates (one
- * above the detector window's clamp) and the two error statuses. */
-static const double preset_args[][2] = {
-    {200.0, 0.8}, {100.0, 0.0}, {1000.0, -0.6}, {4000.0, 1.2}, {20.0, 0.8}, {200.0, 2.0}};
+/* The calls of the presets compared on the target, each preset's: valid
+ * rates (one above the detector window's clamp; the car's delay horizon
+ * is clamped by the ring above 252 Hz) and the two error statuses. The
+ * car's rates keep its window's 0.3 rate + 0.5 away from an integer
+ * (rates of 5 mod 10 Hz), where float and double could round apart. */
+static const double preset_args[][3] = {
+    {200.0, 0.8, 0}, {100.0, 0.0, 0}, {1000.0, -0.6, 0}, {4000.0, 1.2, 0}, {20.0, 0.8, 0},
+    {200.0, 2.0, 0}, {200.0, 0.8, 1}, {100.0, 0.0, 1},   {1000.0, -0.6, 1}, {4000.0, 1.2, 1},
+    {52.0, 0.3, 1},  {20.0, 0.8, 1},  {200.0, -2.0, 1}};
 static const struct {
     int window;
     double z;
@@ -526,21 +531,22 @@ static void print_presets(int corrupt)
 {
     const int n = (int)(sizeof preset_args / sizeof preset_args[0]);
     const int m = (int)(sizeof threshold_args / sizeof threshold_args[0]);
-    printf("\n/* se23_ins_preset_foot and se23_ins_detector_threshold */\n");
+    printf("\n/* se23_ins_preset_foot, se23_ins_preset_car and se23_ins_detector_threshold */\n");
     printf("const insr_preset_t insr_presets[] = {\n");
     for (int i = 0; i < n; ++i) {
         se23_ins_config_t c;
         se23_ins_align_t a;
         const double rate = q(preset_args[i][0]), lat = q(preset_args[i][1]);
+        const int car = preset_args[i][2] != 0.0;
         se23_status_t st;
         memset(&c, 0, sizeof c);
         memset(&a, 0, sizeof a);
-        st = se23_ins_preset_foot(rate, lat, &c, &a);
+        st = car ? se23_ins_preset_car(rate, lat, &c, &a) : se23_ins_preset_foot(rate, lat, &c, &a);
         printf(" {%.17g, %.17g, %d,\n", rate, lat, (int)st);
         gen_print_config(&c);
         printf("  .align = ");
         gen_print_align(&a);
-        printf(" },\n");
+        printf("  .car = %d},\n", car);
     }
     printf("};\nconst int insr_n_presets = %d;\n", n);
     printf("const insr_threshold_t insr_thresholds[] = {\n");

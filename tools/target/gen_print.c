@@ -40,9 +40,12 @@ void gen_print_config(const se23_ins_config_t *c)
            d->window, d->sigma_a, d->sigma_g, d->gravity, d->threshold, c->gravity_test_off);
     printf("   .zupt_sigma_v = %.17g, .zupt_lever = %.17g, .zaru_sigma_w = %.17g,\n",
            c->zupt_sigma_v, c->zupt_lever, c->zaru_sigma_w);
-    printf("   .zaru_after = %.17g,\n", c->zaru_after);
-    printf("   .floor_sigma = %.17g, .floor_step = %.17g, .floor_swing = %.17g},\n",
+    printf("   .rest_speed_max = %.17g, .zaru_after = %.17g,\n", c->rest_speed_max, c->zaru_after);
+    printf("   .floor_sigma = %.17g, .floor_step = %.17g, .floor_swing = %.17g,\n  ",
            c->floor_sigma, c->floor_step, c->floor_swing);
+    gen_vec("mount_bv", &c->mount_bv);
+    printf("\n   .nhc_sigma = %.17g, .nhc_interval = %.17g, .gnss_time_offset = %.17g},\n",
+           c->nhc_sigma, c->nhc_interval, c->gnss_time_offset);
 }
 
 void gen_print_align(const se23_ins_align_t *a)
@@ -51,9 +54,9 @@ void gen_print_align(const se23_ins_align_t *a)
     gen_vec("p_n", &a->p_n);
     printf(" .sigma_p = %.17g, .yaw = %.17g, .sigma_yaw = %.17g, .gyrocompass = %d,\n"
            "         .sigma_v = %.17g, .sigma_bg = %.17g, .sigma_ba = %.17g, .duration = %.17g,\n"
-           "         .measure_noise = %d},\n",
+           "         .course_speed = %.17g, .course_sigma = %.17g, .measure_noise = %d},\n",
            a->sigma_p, a->yaw, a->sigma_yaw, a->gyrocompass, a->sigma_v, a->sigma_bg,
-           a->sigma_ba, a->duration, a->measure_noise);
+           a->sigma_ba, a->duration, a->course_speed, a->course_sigma, a->measure_noise);
 }
 
 void gen_print_start(const insr_start_t *s)
