@@ -16,6 +16,11 @@
 #   make walk-sim    the walk's simulated twin (se23-sim --scenario walk) with
 #                    and without such a misalignment (MISALIGN=..., SEED=N)
 #   make bench-ins   se23-ins throughput on a recorded log of 1.2 M IMU samples
+#   make demo-drive  a real car drive (roof IMU, RTK GNSS) through the library's
+#                    car preset: error against RTK truth, GNSS outages of 10/30/60 s
+#                    with and without the non-holonomic constraint, double and
+#                    float, plots (tools/drive/)
+#   make drive-corpus DIR=folder  the same outage test on every drive of a folder
 
 H := $(BUILD)/harness
 H_GEN := $(H)/gen
@@ -50,7 +55,8 @@ h_objs = $(patsubst %.c,$(H)/obj/%.o,$(1))
 
 include tools/drive/drive.mk
 
-.PHONY: harness demo demo-live demo-walk walk walk-corpus walk-misalign walk-sim bench-ins soak
+.PHONY: harness demo demo-live demo-walk walk walk-corpus walk-misalign walk-sim bench-ins soak \
+        demo-drive drive-corpus
 
 harness: $(H_BIN)/se23-sim $(H_BIN)/se23-ins $(H_BIN)/se23-report $(H_BIN)/se23-corrupt \
          $(H_BIN)/se23-simcheck $(H_BIN)/se23-walk $(H_BIN)/se23-ins-float \
@@ -148,6 +154,18 @@ walk-corpus:
 	@$(MAKE) -s --no-print-directory harness BUILD=$(BUILD)
 	@/usr/bin/python3 tools/walk/corpus.py --bin $(H_BIN) --run $(H)/walk-corpus \
 	    --summary $(H)/walk-corpus.csv --plot $(H)/walk-corpus.png $(DIR)
+
+demo-drive:
+	@sh tools/install-deps.sh $(BUILD)
+	@$(MAKE) -s --no-print-directory harness BUILD=$(BUILD)
+	@sh tools/drive/demo-drive.sh $(H)
+
+drive-corpus:
+	@test -n "$(DIR)" || { echo "make drive-corpus: give DIR=folder of drives" >&2; exit 2; }
+	@sh tools/install-deps.sh $(BUILD)
+	@$(MAKE) -s --no-print-directory harness BUILD=$(BUILD)
+	@/usr/bin/python3 tools/drive/corpus.py --bin $(H_BIN) --work $(H)/drive-corpus \
+	    --summary $(H)/drive-corpus.csv $(FLOAT:1=--float) $(DIR)
 
 walk-misalign:
 	@sh tools/install-deps.sh $(BUILD)

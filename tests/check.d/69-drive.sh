@@ -1,0 +1,32 @@
+# Real car drives (issue 35; tools/drive/, README "Real drives"). The
+# importer and the report on fabricated drives (tools/drive/selftest.sh:
+# counters, time map, outages, refusals of malformed and wrongly-scaled
+# files, the report's figures on a nav log with known errors). Then the
+# shipped RTK drive end to end (make demo-drive: every run of the table in
+# double and in float), its figures held within 25 % of those measured
+# (README "Real drives", this machine): with every fix the median
+# horizontal error against the RTK truth 0.028 m (bound 0.035); the median
+# end error of the outages with the non-holonomic constraint 2.67 / 1.57 /
+# 1.66 % of the distance for 10 / 30 / 60 s (bounds 3.4 / 2.0 / 2.1); float
+# within 10 % of double on each. Without the constraint the 30 s outages'
+# median is 13.97 %: the bound that holds with it must fail. One aided run
+# under valgrind. The programs are built by 60-harness.sh.
+DB="$BUILD/harness/bin"
+DR="$BUILD/harness/drive"
+check drive-selftest sh tools/drive/selftest.sh "$BUILD/harness"
+check drive-shipped sh -c 'sh tools/drive/demo-drive.sh "$1" >/dev/null &&
+    /usr/bin/python3 tools/drive/summary.py --max-pct 10:3.4,30:2.0,60:2.1 \
+        --max-float-ratio 0.1 "$2" &&
+    "$3/se23-drive" --lever 0,-0.05,0 --max-aided-h50 0.035 "$2/aided.log" \
+        "$2/aided-double.log" && "$3/se23-drive" --lever 0,-0.05,0 --max-aided-h50 0.035 \
+        "$2/aided.log" "$2/aided-float.log"' sh "$BUILD/harness" "$DR" "$DB"
+# shellcheck disable=SC2016 # expanded by the inner shell
+check drive-no-nhc-fails-bound sh -c '! "$1/se23-drive" --lever 0,-0.05,0 \
+    --max-outage-pct 2.0 "$2/o30.log" "$2/o30-none-double.log"' sh "$DB" "$DR"
+d_valgrind() {
+    . tools/drive/rtklibexplorer-0708.conf
+    $VALGRIND --suppressions=tools/lcm/valgrind-lcm.supp "$DB/se23-ins" --preset car \
+        --lat "$LAT" --mount "$MOUNT" --lever "$LEVER" --nav-rate 10 \
+        --in "file://$DR/aided.log?speed=0" --out "file://$DR/aided-vg.log?mode=w"
+}
+check drive-valgrind d_valgrind
