@@ -205,8 +205,8 @@ static struct {
     se23_meas_t y;
     se23_pose_t T;
     se23_vec3_t x, lever, w;
-    se23_mat3_t cov;
-    se23_real_t nis;
+    se23_mat3_t cov; /* also se23_meas_nhc's C_bv */
+    se23_real_t nis, sigma;
 } k;
 
 static void take_meas(const se23_real_t **in, se23_meas_t *y)
@@ -292,6 +292,33 @@ void tv_load_se23_meas_zero_rate(const se23_real_t *in)
 }
 int tv_call_se23_meas_zero_rate(void) { return (int)se23_meas_zero_rate(&k.w, &k.x, &k.cov, &k.y); }
 void tv_store_se23_meas_zero_rate(se23_real_t *out) { give_meas(out, &k.y); }
+
+/* T, C_bv, sigma. */
+void tv_load_se23_meas_nhc(const se23_real_t *in)
+{
+    take(&in, &k.T, sizeof k.T);
+    take(&in, &k.cov, sizeof k.cov);
+    k.sigma = take1(&in);
+    fill_meas(&k.y);
+}
+int tv_call_se23_meas_nhc(void) { return (int)se23_meas_nhc(&k.T, &k.cov, k.sigma, &k.y); }
+/* m, z[0..1], H's rows 0..1, R's leading 2 x 2 (tv_list.h). */
+void tv_store_se23_meas_nhc(se23_real_t *out)
+{
+    int i, j;
+    *out++ = k.y.m == N_SENTINEL ? TV_SENTINEL : (se23_real_t)k.y.m;
+    for (i = 0; i < 2; ++i) {
+        *out++ = k.y.z[i];
+    }
+    for (i = 0; i < 2 * SE23_GAUSS_NMAX; ++i) {
+        *out++ = k.y.H[i];
+    }
+    for (i = 0; i < 2; ++i) {
+        for (j = 0; j < 2; ++j) {
+            *out++ = k.y.R[SE23_MEAS_MMAX * i + j];
+        }
+    }
+}
 
 void tv_load_se23_kalman_update(const se23_real_t *in)
 {

@@ -131,6 +131,11 @@ TV_CUSTOM(se23_meas_vel_nav, TV_REALS(se23_pose_t) + 3 + 9, TV_MEAS_REALS, 16)
 TV_CUSTOM(se23_meas_vel_body, TV_REALS(se23_pose_t) + 3 + 9, TV_MEAS_REALS, 16)
 TV_CUSTOM(se23_meas_vel_nav_lever, TV_REALS(se23_pose_t) + 9 + 9, TV_MEAS_REALS, 16)
 TV_CUSTOM(se23_meas_zero_rate, 6 + 9, TV_MEAS_REALS, 16)
+/* se23_meas_nhc's output, m = 2 only: m, z[0..1], rows 0..1 of H, R's
+ * leading 2 x 2 (the rows beyond m are the library's to leave; a quarter
+ * of TV_MEAS_REALS keeps the M7 image's double tables within its flash) */
+#define TV_NHC_REALS (1 + 2 + 2 * SE23_GAUSS_NMAX + 4)
+TV_CUSTOM(se23_meas_nhc, TV_REALS(se23_pose_t) + 9 + 1, TV_NHC_REALS, 16)
 TV_CUSTOM(se23_kalman_update, TV_GAUSS_REALS + TV_MEAS_REALS, TV_GAUSS_REALS + 1, 32)
 
 /* preint_unc.h (se23_preint_unc_t travels as TV_PREINT_UNC_REALS reals) */

@@ -640,6 +640,36 @@ Row meas_rate_input(Ctx &c, int k)
     return r;
 }
 
+// Inputs of se23_meas_nhc: T, C_bv, sigma. Edges: NaN in T.v, T.R not a
+// rotation, C_bv not a rotation, sigma 0, sigma NaN, sigma above
+// SE23_MEAS_NHC_SIGMA_MAX, a residual beyond the precision's range (finite
+// inputs: v along the vehicle's right axis, |v| > max), sigma at its
+// largest. C_bv through the edge angles first.
+Row meas_nhc_input(Ctx &c, int k)
+{
+    Mat5L T = pose_k(c, k + n_angles());
+    Mat3L C = rot_k(c, k);
+    LD sigma = c.uniform(0.01L, 2);
+    if (k == 0) T(1, 3) = kNaN;
+    if (k == 1) T.block<3, 3>(0, 0) *= LD(1.01);
+    if (k == 2) C *= LD(1.01);
+    if (k == 3) sigma = 0;
+    if (k == 4) sigma = kNaN;
+    if (k == 5) sigma = LD(1000.5);
+    if (k == 6) {
+        const LD big = LD(0.9L) * real_max(c);
+        T.block<3, 3>(0, 0) = Mat3L::Identity();
+        T.block<3, 1>(0, 3) = Vec3L(big, big, 0);
+        C = so3_exp(Vec3L(0, 0, -kPi / 4)); // right axis (sin 45, cos 45, 0)
+    }
+    if (k == 7) sigma = 1000;
+    Row r;
+    put_pose(r, T);
+    put(r, C);
+    put(r, sigma);
+    return r;
+}
+
 } // namespace
 
 void add_kalman(Gens &g)
@@ -726,6 +756,37 @@ void add_kalman(Gens &g)
                                     put_meas(out, meas3(z, H, cov));
                                     return int(SE23_OK);
                                 }};
+    // h_r = c_r . u, u = R^T v, c_r the columns 1 and 2 of C_bv (right,
+    // down); with R = Rbar exp(phi^), v = vbar + Rbar nu: u + u^ phi + nu to
+    // first order, so H_r = [(c_r x u)^T, c_r^T, 0, 0, 0], z_r = 0 - h_r.
+    g["se23_meas_nhc"] = {8, meas_nhc_input, [](const Ctx &c, const Row &in, Row &out) {
+                              Rd rd{in};
+                              const Mat5L T = rd.pose();
+                              const Mat3L C = rd.m3();
+                              const LD sigma = rd.s();
+                              Row pose;
+                              put_pose(pose, T);
+                              if (!all_finite(pose)) return int(SE23_ERR_NONFINITE);
+                              if (!is_rotation(T.block<3, 3>(0, 0), c)) return int(SE23_ERR_NOT_ROTATION);
+                              if (!is_rotation(C, c)) return int(SE23_ERR_NOT_ROTATION);
+                              if (!(sigma > 0 && sigma <= 1000)) return int(SE23_ERR_DOMAIN);
+                              const Vec3L u = T.block<3, 3>(0, 0).transpose() * Vec3L(T.block<3, 1>(0, 3));
+                              Vec3L z = Vec3L::Zero();
+                              Mat315L H = Mat315L::Zero();
+                              for (int r = 0; r < 2; ++r) {
+                                  const Vec3L cr = C.col(r + 1);
+                                  z(r) = -cr.dot(u);
+                                  H.block<1, 3>(r, 0) = cr.cross(u).transpose();
+                                  H.block<1, 3>(r, 3) = cr.transpose();
+                              }
+                              if (overflows(c, z, H)) return int(SE23_ERR_NONFINITE);
+                              put(out, LD(2));
+                              put(out, z(0));
+                              put(out, z(1));
+                              put(out, Eigen::Matrix<LD, 2, 15>(H.topRows<2>()));
+                              for (const LD x : {sigma * sigma, LD(0), LD(0), sigma * sigma}) put(out, x);
+                              return int(SE23_OK);
+                          }};
     g["se23_kalman_update"] = {
         kGaussEdges + 4,
         [](Ctx &c, int k) {
@@ -806,6 +867,26 @@ void add_kalman(Gens &g)
                           "se23_meas_vel_nav_lever", "se23_meas_zero_rate"}) {
         g[n].scale = scale_meas();
     }
+    // z and the rows' c_r x u are dot and cross products with u = R^T v:
+    // their rounding is relative to |v|, whatever cancels (z is 0 for a car
+    // that keeps to its constraint).
+    // Row m, z (2), H (2 x 15, each 2 x 3 block scaled by its largest
+    // entry), R (2 x 2).
+    g["se23_meas_nhc"].scale_io = [](const Row &in, const Row &out) {
+        const LD v = std::sqrt(in[9] * in[9] + in[10] * in[10] + in[11] * in[11]);
+        Row s = scale_concat({{1, scale_blocks({1})}, {2, scale_blocks({2})}, {30, scale_blocks({30})},
+                              {4, scale_cov(2)}})(out);
+        s[1] = s[2] = std::max(s[1], v);
+        for (size_t b = 0; b < 5; ++b) {
+            LD m = 0;
+            for (size_t r = 0; r < 2; ++r)
+                for (size_t j = 3 * b; j < 3 * b + 3; ++j) m = std::max(m, std::fabs(out[3 + 15 * r + j]));
+            if (b == 0) m = std::max(m, v);
+            for (size_t r = 0; r < 2; ++r)
+                for (size_t j = 3 * b; j < 3 * b + 3; ++j) s[3 + 15 * r + j] = m;
+        }
+        return s;
+    };
     const Scale update_out = scale_concat({{TV_GAUSS_REALS - 225, scale_concat({{15, scale_pose()},
                                                                                {3, scale_blocks({3})},
                                                                                {3, scale_blocks({3})},
