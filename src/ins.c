@@ -82,9 +82,9 @@ static se23_status_t config_check(const se23_ins_config_t *cfg)
         cfg->zupt_sigma_v, cfg->zaru_sigma_w, cfg->zaru_after, cfg->floor_sigma,
         cfg->floor_step, cfg->floor_swing, cfg->motion.gyro_scale, cfg->motion.accel_scale,
         cfg->motion.gyro_g, cfg->motion.corr_time, cfg->zupt_lever, cfg->nhc_sigma,
-        cfg->nhc_interval, cfg->rest_speed_max, cfg->rest_accel_sigma};
+        cfg->nhc_interval, cfg->rest_speed_max, cfg->rest_accel_sigma, cfg->gravity_step};
     const se23_real_t signed_reals[] = {
-        cfg->lat, cfg->lever_b.v[0], cfg->lever_b.v[1], cfg->lever_b.v[2],
+        cfg->lat, cfg->height, cfg->lever_b.v[0], cfg->lever_b.v[1], cfg->lever_b.v[2],
         cfg->mount_bv.v[0], cfg->mount_bv.v[1], cfg->mount_bv.v[2], cfg->gnss_time_offset};
     const size_t n_bytes = sizeof reals, n_signed_bytes = sizeof signed_reals;
     const int n_reals = (int)n_bytes / (int)sizeof reals[0];
@@ -123,7 +123,8 @@ static se23_status_t config_check(const se23_ins_config_t *cfg)
         (cfg->nhc_sigma > SE23_MEAS_NHC_SIGMA_MAX) || (cfg->rest_speed_max > SE23_INS_VEL_MAX) ||
         ((cfg->nhc_sigma > SE23_R(0)) &&
          ((cfg->nhc_interval <= SE23_R(0)) || (cfg->nhc_interval > SE23_R(60)))) ||
-        (se23_fabs(cfg->gnss_time_offset) > SE23_R(1))) {
+        (se23_fabs(cfg->gnss_time_offset) > SE23_R(1)) ||
+        ((cfg->gravity_step > SE23_R(0)) && (cfg->gravity_step < SE23_R(1)))) {
         return SE23_ERR_DOMAIN;
     }
     if ((cfg->zupt != 0) && (cfg->zupt_sigma_v <= SE23_R(0))) {
@@ -156,7 +157,7 @@ se23_status_t se23_ins_setup(const se23_ins_config_t *cfg, se23_ins_t *ins)
     SE23_CHECK_NOT_NULL(ins);
     st = config_check(cfg);
     if (st == SE23_OK) {
-        st = se23_earth_gravity_vec(SE23_FRAME_NED, cfg->lat, SE23_R(0), &g_n);
+        st = se23_earth_gravity_vec(SE23_FRAME_NED, cfg->lat, cfg->height, &g_n);
     }
     if (st == SE23_OK) {
         st = se23_earth_rate(SE23_FRAME_NED, cfg->lat, &w_ie_n);
@@ -194,6 +195,7 @@ se23_status_t se23_ins_setup(const se23_ins_config_t *cfg, se23_ins_t *ins)
         ins->nhc_interval_ns = to_ns(cfg->nhc_interval);
         ins->gnss_offset_ns = to_ns(cfg->gnss_time_offset);
         ins->C_bv = C_bv;
+        se23_ins_gravity_radii(ins);
         ins->max_missing = (int64_t)per_gap + 1;
         ins->nis_last = SE23_R(0);
         ins->zupt_nis_last = SE23_R(0);
@@ -230,6 +232,7 @@ void se23_ins_start(se23_ins_t *ins, int64_t t_ns, const se23_gauss_t *g)
     ins->floor_d = SE23_R(0);
     ins->floor_set = 0;
     se23_ins_ring_restart(ins);
+    se23_ins_gravity_follow(ins);
     se23_ins_factor_reset(ins);
 }
 

@@ -14,6 +14,7 @@
  *                        GNSS gate and gate recovery
  *          ins_delay.c   sample ring, snapshots, delayed fixes
  *          ins_align.c   static alignment, heading from the GNSS course
+ *          ins_gravity.c gravity that follows the position
  */
 #ifndef SE23_INS_INTERNAL_H
 #define SE23_INS_INTERNAL_H
@@ -120,6 +121,14 @@ int se23_ins_zupt(se23_ins_t *ins, const se23_imu_sample_t *s, int rest);
  * Returns 1 on success; a failure is counted in filter_errors.
  */
 int se23_ins_nhc(se23_ins_t *ins);
+
+/** The origin's radii of curvature (plus its height) for the gravity that
+ *  follows the position, and no cube yet (ins_gravity.c). */
+void se23_ins_gravity_radii(se23_ins_t *ins);
+
+/** The model's gravity for the cube the state's position is in, if it
+ *  changed (ins.h, "Frame"; nothing with gravity_step 0). */
+void se23_ins_gravity_follow(se23_ins_t *ins);
 
 /**
  * The rest updates of a stationary sample in place on ins->g (zaru: the

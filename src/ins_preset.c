@@ -192,6 +192,7 @@ se23_status_t se23_ins_preset_car(se23_real_t rate_hz, se23_real_t lat,
     c.gyro_range = SE23_R(2000) * DEG;
     c.accel_range = SE23_R(16) * SE23_R(9.80665);
     c.lat = lat;
+    c.gravity_step = SE23_R(100); /* gravity follows the car (ins.h, "Frame") */
     c.earth_rotation = 1;
     c.bias_states = 1;
     c.dt_nominal = SE23_R(1) / rate_hz;

@@ -17,6 +17,7 @@ int se23_ins_step(se23_ins_t *ins, int64_t t_ns, const se23_imu_sample_t *s, int
     if (se23_ins_predict_interval(ins, s) == 0) {
         return 0;
     }
+    se23_ins_gravity_follow(ins); /* for the next step: the position it reached */
     ins->t_ns = t_ns;
     ins->last = *s;
     ins->have_last = 1;

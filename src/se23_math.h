@@ -31,11 +31,15 @@
 #ifndef SE23_FABS
 #define SE23_FABS SE23_LIBM(fabs)
 #endif
+#ifndef SE23_FLOOR
+#define SE23_FLOOR SE23_LIBM(floor)
+#endif
 
 static inline se23_real_t se23_sqrt(se23_real_t x) { return SE23_SQRT(x); }
 static inline se23_real_t se23_fmod(se23_real_t x, se23_real_t y) { return SE23_FMOD(x, y); }
 static inline se23_real_t se23_atan2(se23_real_t y, se23_real_t x) { return SE23_ATAN2(y, x); }
 static inline se23_real_t se23_fabs(se23_real_t x) { return SE23_FABS(x); }
+static inline se23_real_t se23_floor(se23_real_t x) { return SE23_FLOOR(x); }
 
 /** a b + c with one rounding where the FPU fuses it (M4F single, M7
  *  double: one instruction; the library's ISO C build never contracts

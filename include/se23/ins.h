@@ -108,8 +108,8 @@
  * any fix within the horizon has a snapshot before it. Fusing a fix stamped
  * d seconds late costs the replay of up to d + delay_horizon seconds of
  * samples (prediction and the zero-velocity updates), in that call.
- * Memory: sizeof(se23_ins_t) = 17,936 B + SE23_INS_RING x 72 B in double,
- * 9,208 B + SE23_INS_RING x 48 B in float (27,152 / 15,352 B with the
+ * Memory: sizeof(se23_ins_t) = 17,984 B + SE23_INS_RING x 72 B in double,
+ * 9,240 B + SE23_INS_RING x 48 B in float (27,200 / 15,384 B with the
  * default ring; README "The navigation filter"; test_ins.c asserts it),
  * the kernels' work areas included (1,512 / 756 B, kept here and not on
  * the stack of the calls);
@@ -177,6 +177,18 @@
  * there, no update. The stances of a ramp that climbs more than floor_step per
  * stride start a new level each; a gentler one is pulled toward the level
  * it started on. Counted in floor_used / floor_levels.
+ *
+ * Frame. The nav frame is the origin's NED tangent frame (lat, height):
+ * Cartesian and fixed to the Earth, so the Earth rate is one vector in it
+ * and the Coriolis and centrifugal terms stay exact however far the
+ * vehicle goes. Only gravity depends on the position: with gravity_step >
+ * 0 it follows the vehicle (src/ins_gravity.c: the local vertical tilts
+ * from the origin's by 0.16 mrad per km), evaluated at the centre of the
+ * cube of gravity_step metres the position is in; its direction is right
+ * to (d/R)^2 at d from the origin (0.1 mg at 20 km, 0.6 mg at 50 km: the
+ * supported range). Positions in the frame are Cartesian: a point's
+ * geodetic position is se23_geo_from_ned's (geodetic.h), not the
+ * frame's "down" far away.
  *
  * Vehicles. A wheeled vehicle neither slides sideways nor leaves the road:
  * with nhc_sigma > 0, a moving sample (the detector, if on, not at rest)
@@ -382,6 +394,10 @@ typedef struct {
     se23_real_t gyro_range;     /**< sensor range per axis, |w_i| [rad/s] */
     se23_real_t accel_range;    /**< sensor range per axis, |f_i| [m/s^2] */
     se23_real_t lat;            /**< latitude of the nav-frame (NED) origin [rad] */
+    se23_real_t height;         /**< its ellipsoidal height [m] (gravity; "Frame") */
+    se23_real_t gravity_step;   /**< gravity follows the position, re-evaluated in
+                                 *   cubes of this size [m] ("Frame"; 0: the origin's
+                                 *   gravity everywhere) */
     int earth_rotation;         /**< 1: rotating Earth, 0: flat */
     int bias_states;            /**< 1: 15 states, 0: 9 (biases fixed) */
     se23_real_t dt_nominal;     /**< nominal IMU interval [s] */
@@ -528,6 +544,8 @@ typedef struct {
     int64_t floor_swing_ns;       /**< floor_swing */
     int64_t nhc_interval_ns;      /**< nhc_interval */
     int64_t gnss_offset_ns;       /**< gnss_time_offset */
+    int32_t grav_cube[3];         /**< the cube whose gravity the model holds ("Frame") */
+    int grav_set;                 /**< nonzero once grav_cube is set */
     /* structures holding int64 */
     se23_ins_gnss_t pending;      /**< a fix ahead of the state */
     se23_ins_factor_t fac, fac_out; /**< preintegration */
@@ -555,6 +573,7 @@ typedef struct {
     se23_ins_counters_t c;
     se23_ins_config_t cfg;
     se23_mat3_t C_bv;             /**< the mounting, exp(mount_bv^) */
+    se23_real_t grav_rm, grav_rn; /**< meridian, prime-vertical radius + height at the origin */
     se23_imu_noise_t noise;       /**< the white noise propagated: cfg.noise, or
                                    *   raised by a measuring alignment */
     se23_stationary_t det;

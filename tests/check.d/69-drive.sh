@@ -26,7 +26,7 @@ check drive-no-nhc-fails-bound sh -c '! "$1/se23-drive" --lever 0,-0.05,0 \
 d_valgrind() {
     . tools/drive/rtklibexplorer-0708.conf
     $VALGRIND --suppressions=tools/lcm/valgrind-lcm.supp "$DB/se23-ins" --preset car \
-        --lat "$LAT" --mount "$MOUNT" --lever "$LEVER" --nav-rate 10 \
+        --lat "$LAT" --height "$HEIGHT" --mount "$MOUNT" --lever "$LEVER" --nav-rate 10 \
         --in "file://$DR/aided.log?speed=0" --out "file://$DR/aided-vg.log?mode=w"
 }
 check drive-valgrind d_valgrind

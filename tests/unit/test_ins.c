@@ -105,10 +105,10 @@ static void test_ins_memory_is_as_documented(void **state)
     (void)state;
 #if SE23_CFG_DOUBLE
     assert_int_equal(sizeof(se23_ins_hist_t), 72);
-    assert_int_equal(sizeof(se23_ins_t), 17936 + SE23_INS_RING * 72);
+    assert_int_equal(sizeof(se23_ins_t), 17984 + SE23_INS_RING * 72);
 #else
     assert_int_equal(sizeof(se23_ins_hist_t), 48);
-    assert_int_equal(sizeof(se23_ins_t), 9208 + SE23_INS_RING * 48);
+    assert_int_equal(sizeof(se23_ins_t), 9240 + SE23_INS_RING * 48);
 #endif
 }
 

@@ -119,11 +119,12 @@ def import_drive(b, kind, folder, name, log, outages):
     cmd += ["--out", "file://%s?mode=w" % log]
     if run(cmd, log + ".txt") != 0:
         return None
-    lat = None
+    lat = height = None
     for line in open(log + ".txt"):
         if "origin lat" in line:
             lat = float(line.split("origin lat")[1].split()[0])
-    return inst, lat
+            height = float(line.split(" h ")[1].split()[0])
+    return inst, lat, height
 
 
 def schedule(span, length):
@@ -182,14 +183,14 @@ def main(argv):
         if got is None:
             print("drive-corpus: %s: the import refused it (%s)" % (name, base + "-aided.log.txt"))
             continue
-        inst, lat = got
+        inst, lat, height = got
         span = None
         row = {"drive": name, "kind": kind, "mount": inst["MOUNT"]}
         for p in precisions:
             ins = "se23-ins" if p == "double" else "se23-ins-float"
             nav = base + "-aided-%s.nav.log" % p
-            run([b + "/" + ins, "--preset", "car", "--lat", "%.7f" % lat, "--mount", inst["MOUNT"],
-                 "--lever", inst["LEVER"], "--nav-rate", "100", "--in",
+            run([b + "/" + ins, "--preset", "car", "--lat", "%.7f" % lat, "--height", "%.3f" % height,
+                 "--mount", inst["MOUNT"], "--lever", inst["LEVER"], "--nav-rate", "100", "--in",
                  "file://%s?speed=0" % (base + "-aided.log"), "--out", "file://%s?mode=w" % nav],
                 nav + ".txt")
             rows, _ = score(b, base + "-aided.log", nav, inst["LEVER"], base + "-aided-%s.csv" % p)
@@ -213,7 +214,8 @@ def main(argv):
                     import_drive(b, kind, folder, name, log, outs)
                 for mode, extra in (("nhc", []), ("none", ["--nhc-sigma", "0"])):
                     nav = base + "-o%d-%s-%s.nav.log" % (length, mode, p)
-                    run([b + "/" + ins, "--preset", "car", "--lat", "%.7f" % lat, "--mount",
+                    run([b + "/" + ins, "--preset", "car", "--lat", "%.7f" % lat, "--height",
+                         "%.3f" % height, "--mount",
                          inst["MOUNT"], "--lever", inst["LEVER"], "--nav-rate", "100"] + extra +
                         ["--in", "file://%s?speed=0" % log, "--out", "file://%s?mode=w" % nav],
                         nav + ".txt")

@@ -40,7 +40,7 @@ drive_import() {
 drive_run() {
     log=$1 ins=$2 name=$3
     shift 3
-    "$BIN/$ins" --preset car --lat "$LAT" --mount "$MOUNT" --lever "$LEVER" --nav-rate 100 "$@" \
+    "$BIN/$ins" --preset car --lat "$LAT" --height "$HEIGHT" --mount "$MOUNT" --lever "$LEVER" --nav-rate 100 "$@" \
         --in "file://$RUN/$log.log?speed=0" --out "file://$RUN/$name.log?mode=w" \
         >"$RUN/$name-ins.txt" 2>&1
     "$BIN/se23-drive" --lever "$LEVER" --label "$name" --csv "$RUN/$name.csv" \

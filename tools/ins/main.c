@@ -54,7 +54,7 @@ typedef struct {
     double lat_deg, max_gap, gate, horizon, max_outage, preint, lever[3];
     double alpha, zupt_sv, zupt_lever, floor_sigma;
     double mount_deg[3]; /* --mount roll, pitch, yaw of C_bv [deg] */
-    double nhc_sigma, gnss_offset;
+    double nhc_sigma, gnss_offset, height;
     int64_t recover, window;
     int profile, earth, bias, zupt;
 } filter_opts_t;
@@ -116,6 +116,7 @@ static void usage(FILE *f)
             "                        log's by more than 1 %% is refused (exit status 5)\n"
             "  --earth on|off        rotating-Earth model (on)\n"
             "  --lat DEG             latitude of the nav-frame origin (45)\n"
+            "  --height M            its ellipsoidal height, for gravity (0)\n"
             "  --bias-states on|off  15-state filter with bias states (on)\n"
             "  --nav-rate HZ         nav_state output rate (50)\n"
             "  --gate X              chi-square gate on GNSS innovations, 0 = none (30)\n"
@@ -222,6 +223,7 @@ static int parse_args(int argc, char **argv, node_opts_t *o)
         {"--imu-rate", HOPT_DOUBLE, &f->imu_rate, 1.0, 1e5, NULL},
         {"--earth", HOPT_CHOICE, &f->earth, 0, 0, harness_on_off},
         {"--lat", HOPT_DOUBLE, &f->lat_deg, -90.0, 90.0, NULL},
+        {"--height", HOPT_DOUBLE, &f->height, -1e4, 1e5, NULL},
         {"--bias-states", HOPT_CHOICE, &f->bias, 0, 0, harness_on_off},
         {"--nav-rate", HOPT_DOUBLE, &o->nav_rate, 1e-3, inf, NULL},
         {"--gate", HOPT_DOUBLE, &f->gate, 0.0, inf, NULL},
@@ -349,6 +351,7 @@ static int build_config(const node_opts_t *o, double rate, const char *rate_from
                         "%g Hz (%s)\n", o->preset == 1 ? "foot" : "car", rate, rate_from);
         return -1;
     }
+    c->height = f->height;
     if (o->preset != 1) { /* the installation: the foot preset has none */
         if (mount_rotation(f->mount_deg, &c->mount_bv) != 0) {
             return -1;
