@@ -361,7 +361,8 @@ se23_ins_verdict_t se23_ins_fuse_gnss(se23_ins_t *ins, const se23_ins_gnss_t *fi
          * p - v dt (at 30 m/s the 5 ms of half a 100 Hz sample are 15 cm;
          * the error of v, and the antenna's turn about the IMU in 5 ms, add
          * well under a millimetre) */
-        const se23_real_t dt = (se23_real_t)(fix->t_ns - ins->t_ns) / SE23_INS_NS;
+        const int64_t dt_ns = fix->t_ns - ins->t_ns;
+        const se23_real_t dt = (se23_real_t)dt_ns / SE23_INS_NS;
         se23_vec3_t p_now;
         se23_v3_axpy(&fix->p_n, -dt, &ins->work.T.v, &p_now);
         st = se23_meas_pos_nav(&ins->work.T, &p_now, &ins->cfg.lever_b, &C, &ins->meas);
