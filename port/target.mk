@@ -19,7 +19,7 @@ TGT_LDFLAGS := -nostartfiles --specs=nano.specs --specs=rdimon.specs \
 TGT_PORT_OBJS = $(TGT)/$(1)/port/startup.o $(TGT)/$(1)/port/se23_port.o
 TGT_TV_OBJS = $(TGT)/$(1)/tv_runner.o $(call TGT_TV_LIB_OBJS,$(1))
 # The adapters of every routine, shared by the test and benchmark images.
-TGT_TV_LIB_OBJS = $(patsubst %,$(TGT)/$(1)/%.o,tv_adapters tv_custom tv_custom_gauss)
+TGT_TV_LIB_OBJS = $(patsubst %,$(TGT)/$(1)/%.o,tv_adapters tv_custom tv_custom_gauss tv_custom_geo)
 
 # Reference vectors: tools/target/gen_vectors (host, C++) from the Eigen
 # reference library that the CMake test tree builds (tests/reference).

@@ -169,3 +169,14 @@ TV_CUSTOM(se23_stationary_var, TV_ST_IN, 6, 16)
 TV_CUSTOM(se23_align_level, 5, 9, 8)
 TV_CUSTOM(se23_align_cov, 13, 9, 8)
 TV_CUSTOM(se23_align_gyrocompass, 10, 11, 16)
+
+/* geodetic.h (an integer travels as two reals hi = floor(x / 2^20) and
+ * lo = x - 2^20 hi, exact in float; se23_geo_t as lat, lon, h: 6 reals; a
+ * frame as its origin, built by se23_geo_origin in the loader; tol 1: the
+ * bounds are the generator's scales, tools/target/gen_geo.cpp) */
+#include "se23/geodetic.h"
+#define TV_GEO_REALS 6
+TV_CUSTOM(se23_geo_origin, TV_GEO_REALS, TV_GEO_REALS + 9, 1)
+TV_CUSTOM(se23_geo_to_ned, 2 * TV_GEO_REALS, 3, 1)
+TV_CUSTOM(se23_geo_from_ned, TV_GEO_REALS + 3, TV_GEO_REALS, 1)
+TV_CUSTOM(se23_geo_down_at, TV_GEO_REALS + 3, 3, 1)

@@ -289,6 +289,7 @@ void add_gauss(Gens &g);  // gauss.h (gen_gauss.cpp)
 void add_kalman(Gens &g); // kalman.h (gen_gauss.cpp)
 void add_preint_unc(Gens &g); // preint_unc.h (gen_preint_unc.cpp)
 void add_align(Gens &g); // stationary.h, align.h (gen_align.cpp)
+void add_geo(Gens &g); // geodetic.h (gen_geo.cpp)
 
 } // namespace gen
 

@@ -148,6 +148,7 @@ int main(int argc, char **argv)
         add_kalman(g);
         add_preint_unc(g);
         add_align(g);
+        add_geo(g);
         const auto &rows = list_rows();
         for (const auto &kv : g) {
             bool listed = false;
