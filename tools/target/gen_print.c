@@ -26,8 +26,9 @@ void gen_print_config(const se23_ins_config_t *c)
            n->gyro_walk, n->accel_walk);
     printf("   .motion = {%.17g, %.17g, %.17g, %.17g},\n", c->motion.gyro_scale,
            c->motion.accel_scale, c->motion.gyro_g, c->motion.corr_time);
-    printf("   .gyro_range = %.17g, .accel_range = %.17g, .lat = %.17g,\n", c->gyro_range,
-           c->accel_range, c->lat);
+    printf("   .gyro_range = %.17g, .accel_range = %.17g, .lat = %.17g, .height = %.17g,\n",
+           c->gyro_range, c->accel_range, c->lat, c->height);
+    printf("   .gravity_step = %.17g,\n", c->gravity_step);
     printf("   .earth_rotation = %d, .bias_states = %d, .dt_nominal = %.17g, .max_gap = %.17g,\n",
            c->earth_rotation, c->bias_states, c->dt_nominal, c->max_gap);
     printf("   .max_outage = %.17g, .outage_accel = %.17g, .outage_rate = %.17g,\n  ",
@@ -40,7 +41,8 @@ void gen_print_config(const se23_ins_config_t *c)
            d->window, d->sigma_a, d->sigma_g, d->gravity, d->threshold, c->gravity_test_off);
     printf("   .zupt_sigma_v = %.17g, .zupt_lever = %.17g, .zaru_sigma_w = %.17g,\n",
            c->zupt_sigma_v, c->zupt_lever, c->zaru_sigma_w);
-    printf("   .rest_speed_max = %.17g, .zaru_after = %.17g,\n", c->rest_speed_max, c->zaru_after);
+    printf("   .rest_speed_max = %.17g, .rest_accel_sigma = %.17g, .zaru_after = %.17g,\n",
+           c->rest_speed_max, c->rest_accel_sigma, c->zaru_after);
     printf("   .floor_sigma = %.17g, .floor_step = %.17g, .floor_swing = %.17g,\n  ",
            c->floor_sigma, c->floor_step, c->floor_swing);
     gen_vec("mount_bv", &c->mount_bv);
