@@ -241,10 +241,10 @@ def print_table(table, precisions):
     print("Car drives, se23-ins --preset car: horizontal error against each drive's reference"
           " with every fix (median) and its mean NEES (3 dof, ideal 3), then the median error at"
           " the end of GNSS outages in % of the distance driven in them, with NHC / without"
-          " (n outages), double:")
+          " (n outages) and the median NEES at their ends with NHC (3 dof, ideal 3), double:")
     head = "%-40s %6s %5s %9s %6s" % ("drive", "km", "min", "aided m", "NEES")
     for length in LENGTHS:
-        head += "  %-21s" % ("%d s: NHC / none (n)" % length)
+        head += "  %-29s" % ("%d s: NHC / none (n) NEES" % length)
     print(head)
     for r in table:
         line = "%-40s %6.2f %5.1f %9.3f %6.2f" % (r["drive"], r.get("dist_km", float("nan")),
@@ -253,16 +253,18 @@ def print_table(table, precisions):
         for length in LENGTHS:
             k = "o%d_nhc_double" % length
             if k in r:
-                line += "  %6.2f / %6.2f (%2d)" % (r[k], r["o%d_none_double" % length],
-                                                   r["o%d_n" % length])
+                line += "  %6.2f / %6.2f (%2d) %6.2f" % (r[k], r["o%d_none_double" % length],
+                                                         r["o%d_n" % length], r[k + "_nees"])
             else:
-                line += "  %-21s" % "-"
+                line += "  %-29s" % "-"
         print(line)
     for length in LENGTHS:
         vals = [r["o%d_nhc_double" % length] for r in table if "o%d_nhc_double" % length in r]
         none = [r["o%d_none_double" % length] for r in table if "o%d_none_double" % length in r]
-        print("median over the drives, %2d s outages: %.2f %% with NHC, %.2f %% without"
-              % (length, median(vals), median(none)))
+        nees = [r["o%d_nhc_double_nees" % length] for r in table
+                if "o%d_nhc_double" % length in r]
+        print("median over the drives, %2d s outages: %.2f %% with NHC, %.2f %% without;"
+              " NEES at the ends %.2f" % (length, median(vals), median(none), median(nees)))
     if "float" in precisions:
         for length in LENGTHS:
             d = [r.get("o%d_nhc_double" % length) for r in table]
