@@ -24,8 +24,9 @@
  * differences of nanodegrees, times pi/180e-9 as an unevaluated sum of two
  * reals (a "double-real": hi + lo, about 2^-44 relative in float). The two
  * terms of size offset, W sin x and W c sin y, are formed as a TwoProduct
- * (Dekker, exact: the library's ISO C build never contracts a * b + c)
- * of a (exact in float) with sin x (double-real), resp. c sin y
+ * (p = a b, e = fma(a, b, -p): exact whatever the compiler contracts; a
+ * Veltkamp/Dekker split product is not, -ffp-contract=fast fuses its
+ * steps) of a (exact in float) with sin x (double-real), resp. c sin y
  * (double-real product, c = c0 + (c - c0) with c0 double-real), plus
  * (W - a) times the leading part in plain reals: the rounding of the
  * result is the only error of size eps * offset. Every other term is at
@@ -39,12 +40,25 @@
  * doublings, each ~2^-44 relative in float), then the addition of r by its
  * Taylor series: sin/cos lat0 to ~1e-12 relative in float, far below what
  * the terms above need (1e-9).
+ * Contraction. Built with -ffp-contract=fast (the Cortex-M target library)
+ * the compiler may fuse any a * b + c: the only steps that need an exact
+ * rounding are the TwoProducts (explicit fma), TwoSum and FastTwoSum
+ * (additions only: fusing a product into an operand changes that operand
+ * by a rounding, which the sum then carries exactly) and the remainders of
+ * mm_to_m_dr and round64 (explicit fma, resp. an exact product); every
+ * other expression is an ordinary rounded one, fused or not. The host
+ * tests pass with and without contraction, with the same accuracy.
+ * Integers. No int64 <-> real conversion and no 64-bit division (on
+ * Cortex-M these are libgcc routines, the float -> int64 one in double):
+ * an int64 of up to 40 bits goes to reals as two exact 32-bit parts
+ * (int_to_dr), back from reals by two 32-bit truncations (round64), and
+ * whole degrees are split off by binary long division (sincos_lat).
  *
  * Operation count of se23_geo_to_ned (the hot routine), float build: 2
- * integer-to-real angle conversions (2 int64->real, 1 real->int64 each,
- * with a TwoProduct: 17 flops), 2 x 2 Taylor series (Horner, 6 terms),
- * 1 double-real product (~25 flops), 2 TwoProducts (17 each), 1 sqrt,
- * 1 division, ~60 further multiplications and additions: about 230 flops
+ * integer-to-real angle conversions (2 uint32->real each, a FastTwoSum,
+ * a TwoProduct: ~10 flops), 2 x 2 Taylor series (Horner, 6 terms),
+ * 1 double-real product (~10 flops), 2 TwoProducts (2 each), 1 sqrt,
+ * 1 division, ~60 further multiplications and additions: about 150 flops
  * in all, no trigonometric call, no loop.
  */
 #include "se23/geodetic.h"
@@ -68,8 +82,6 @@
 #define GEO_S1_LO SE23_R(0x1.5834d68148788p-60)
 #define GEO_C1_HI SE23_R(0x1.ffec097f5af8ap-1)
 #define GEO_C1_LO SE23_R(-0x1.18945ff801a15p-55)
-/* Veltkamp's splitter 2^ceil(p/2) + 1, p the significand's bits. */
-#define GEO_SPLIT SE23_R(134217729.0)
 #else
 #define GEO_K_HI SE23_R(0x1.330aa4p-36)
 #define GEO_K_LO SE23_R(0x1.16f994p-62)
@@ -77,14 +89,24 @@
 #define GEO_S1_LO SE23_R(0x1.713ba4p-31)
 #define GEO_C1_HI SE23_R(0x1.ffec0ap-1)
 #define GEO_C1_LO SE23_R(-0x1.014a0ep-26)
-#define GEO_SPLIT SE23_R(4097.0)
 #endif
 
 /* Whole degrees in 1e-9 deg; the latitude of the origin is split there. */
 #define GEO_DEG_E9 INT64_C(1000000000)
-#define GEO_HALF_DEG_E9 INT64_C(500000000)
+#define GEO_HALF_DEG_E9 INT32_C(500000000)
 /* Binary digits of the whole degrees of |lat0| <= 90. */
 #define GEO_DEG_BITS 7
+/* An integer of up to 40 bits is taken to reals as hi 2^16 + lo, hi and lo
+ * 32-bit integers (exact conversions, no int64 <-> real routine). */
+#define GEO_SPLIT_BITS 16
+#define GEO_SPLIT_MASK UINT64_C(0xFFFF)
+#define GEO_2P16 SE23_R(65536.0)
+#define GEO_2M16 SE23_R(1.52587890625e-5)
+/* The fused multiply-add of the build's precision, always the correctly
+ * rounded libm function (one instruction on M4F/M7: VFMA.F32 / VFMA.F64;
+ * a libm call on a host without FMA): the exact products below rely on it,
+ * not on the contraction setting. */
+#define GEO_FMA SE23_LIBM(fma)
 /* Newton corrections of se23_geo_from_ned (quadratic: the first guess is
  * off by < 1 km, then < 0.2 m, < 1e-8 m; the rest absorb the rounding to
  * integers). */
@@ -123,23 +145,20 @@ static dreal_t fast_two_sum(se23_real_t a, se23_real_t b)
     return r;
 }
 
-/* hi + lo = a, each with half the significand (Veltkamp). */
-static dreal_t split(se23_real_t a)
+static dreal_t dr_neg(dreal_t x)
 {
-    const se23_real_t t = GEO_SPLIT * a;
-    const se23_real_t hi = t - (t - a);
-    const dreal_t r = {hi, a - hi};
+    const dreal_t r = {-x.hi, -x.lo};
     return r;
 }
 
-/* p + e = a b exactly (Dekker's TwoProduct; no overflow here). */
+/* p + e = a b exactly (TwoProduct by a fused multiply-add: e = a b - p
+ * with one rounding is exact, no underflow here). Unlike Dekker's split
+ * product it holds whatever the compiler contracts: p is a lone product,
+ * and the fma is explicit. */
 static dreal_t two_prod(se23_real_t a, se23_real_t b)
 {
-    const dreal_t as = split(a);
-    const dreal_t bs = split(b);
     const se23_real_t p = a * b;
-    const se23_real_t e = (((as.hi * bs.hi - p) + as.hi * bs.lo) + as.lo * bs.hi) +
-                          as.lo * bs.lo;
+    const se23_real_t e = GEO_FMA(a, b, -p);
     const dreal_t r = {p, e};
     return r;
 }
@@ -158,20 +177,25 @@ static dreal_t dr_add(dreal_t x, dreal_t y)
     return fast_two_sum(s.hi, s.lo + (x.lo + y.lo));
 }
 
-static dreal_t dr_neg(dreal_t x)
+/* d = dh + dl exactly in reals, dh = d rounded, |dl| <= half its spacing
+ * (|d| < 2^40: |d| = u1 2^16 + u0, u1 < 2^24 and u0 < 2^16 exact in float,
+ * u1 2^16 exact, their sum by FastTwoSum). */
+static dreal_t int_to_dr(int64_t d)
 {
-    const dreal_t r = {-x.hi, -x.lo};
-    return r;
+    const uint64_t u = (d < 0) ? (uint64_t)0 - (uint64_t)d : (uint64_t)d;
+    const uint32_t u1 = (uint32_t)(u >> GEO_SPLIT_BITS);
+    const uint32_t u0 = (uint32_t)(u & GEO_SPLIT_MASK);
+    const dreal_t r = fast_two_sum((se23_real_t)u1 * GEO_2P16, (se23_real_t)u0);
+    return (d < 0) ? dr_neg(r) : r;
 }
 
 /* The angle of d nanodegrees [rad], double-real: d = dh + dl exactly in
  * reals (|d| <= 1e11 < 2^37: dh is an integer, |dl| <= 2^13), times K. */
 static dreal_t angle(int64_t d)
 {
-    const se23_real_t dh = (se23_real_t)d;
-    const int64_t dh_int = (int64_t)dh;
-    const int64_t rest = d - dh_int;
-    const se23_real_t dl = (se23_real_t)rest;
+    const dreal_t dd = int_to_dr(d);
+    const se23_real_t dh = dd.hi;
+    const se23_real_t dl = dd.lo;
     const dreal_t p = two_prod(GEO_K_HI, dh);
     return fast_two_sum(p.hi, p.lo + (GEO_K_HI * dl + GEO_K_LO * dh));
 }
@@ -220,11 +244,21 @@ static void rotate(dreal_t *s, dreal_t *c, dreal_t sb, dreal_t cb)
 /* sin, cos of |lat| [1e-9 deg] <= 90 deg, double-real (file comment). */
 static void sincos_lat(int64_t lat_abs, dreal_t *s, dreal_t *c)
 {
-    int64_t deg = lat_abs / GEO_DEG_E9;
-    int64_t r = lat_abs - deg * GEO_DEG_E9;
+    /* deg = lat_abs / 1e9 by binary long division (no 64-bit division
+     * routine), then r = lat_abs - deg 1e9 in [-0.5, 0.5] deg. */
+    int32_t deg = 0;
+    int64_t rem = lat_abs;
+    for (int k = GEO_DEG_BITS - 1; k >= 0; k--) {
+        const int64_t unit = GEO_DEG_E9 * (INT64_C(1) << k);
+        if (rem >= unit) {
+            rem -= unit;
+            deg += INT32_C(1) << k;
+        }
+    }
+    int32_t r = (int32_t)rem; /* < 1e9 */
     if (r > GEO_HALF_DEG_E9) {
         deg += 1;
-        r -= GEO_DEG_E9;
+        r -= (int32_t)GEO_DEG_E9;
     }
     dreal_t s_acc = {SE23_R(0), SE23_R(0)};
     dreal_t c_acc = {SE23_R(1), SE23_R(0)};
@@ -257,21 +291,24 @@ static int geo_valid(const se23_geo_t *g)
            (g->h_mm >= -SE23_GEO_H_MAX_MM) && (g->h_mm <= SE23_GEO_H_MAX_MM);
 }
 
-/* mm -> m, one rounding for |mm| < 2^24 (float) */
-static se23_real_t mm_to_m(int64_t mm)
+/* mm -> m; mm is a height or a height difference, |mm| <= 2e8 (checked
+ * by the callers): q exact in double, one rounding in float (2e8 < 2^28,
+ * spacing <= 16 mm, relative 6e-8), then the division's. */
+static se23_real_t mm_to_m(int32_t mm)
 {
-    const se23_real_t r = (se23_real_t)mm;
-    return r / SE23_R(1000);
+    const se23_real_t q = (se23_real_t)mm;
+    return q / SE23_R(1000);
 }
 
-/* mm -> m as double-real hi + lo (exact for |mm| < 2^24 in float; q - P.hi
- * is exact by Sterbenz's lemma, P exact by TwoProduct). */
-static dreal_t mm_to_m_dr(int64_t mm)
+/* mm -> m as double-real hi + lo (exact for |mm| < 2^24 in float): the
+ * remainder q - 1000 hi of a correctly rounded quotient is a real, and the
+ * fused multiply-add forms it exactly. */
+static dreal_t mm_to_m_dr(int32_t mm)
 {
     const se23_real_t q = (se23_real_t)mm;
     const se23_real_t hi = q / SE23_R(1000);
-    const dreal_t p = two_prod(hi, SE23_R(1000));
-    const dreal_t r = {hi, ((q - p.hi) - p.lo) / SE23_R(1000)};
+    const se23_real_t rest = GEO_FMA(-hi, SE23_R(1000), q);
+    const dreal_t r = {hi, rest / SE23_R(1000)};
     return r;
 }
 
@@ -311,7 +348,7 @@ typedef struct {
     se23_real_t w;  /* sqrt(1 - e^2 sin^2 lat) */
 } geo_point_t;
 
-static void geo_offset(const se23_geo_frame_t *fr, const geo_angles_t *g, int64_t dh_mm,
+static void geo_offset(const se23_geo_frame_t *fr, const geo_angles_t *g, int32_t dh_mm,
                        geo_point_t *pt)
 {
     const se23_real_t a = GEO_A;
@@ -320,7 +357,7 @@ static void geo_offset(const se23_geo_frame_t *fr, const geo_angles_t *g, int64_
     const se23_real_t w = se23_sqrt(SE23_R(1) - GEO_E2 * g->s * g->s);
     const se23_real_t dn = a * GEO_E2 * g->ds * (SE23_R(2) * s0 + g->ds) /
                            (w * fr->w0 * (w + fr->w0));
-    const se23_real_t h = mm_to_m((int64_t)fr->origin.h_mm + dh_mm);
+    const se23_real_t h = mm_to_m(fr->origin.h_mm + dh_mm);
     const se23_real_t b = fr->dn0 + dn + h; /* N + h - a */
     const se23_real_t nh = a + b;
     const se23_real_t nsd = dn * g->s + (a + fr->dn0) * g->ds; /* N s - N0 s0 */
@@ -399,7 +436,7 @@ se23_status_t se23_geo_origin(const se23_geo_t *origin, se23_geo_frame_t *frame)
     const se23_real_t s2 = s0.hi * s0.hi;
     const se23_real_t w0 = se23_sqrt(SE23_R(1) - GEO_E2 * s2);
     const se23_real_t dn0 = a * GEO_E2 * s2 / (w0 * (SE23_R(1) + w0));
-    const se23_real_t h0 = mm_to_m((int64_t)origin->h_mm);
+    const se23_real_t h0 = mm_to_m(origin->h_mm);
     frame->origin = *origin;
     frame->sin_hi = s0.hi;
     frame->sin_lo = s0.lo;
@@ -445,7 +482,7 @@ se23_status_t se23_geo_to_ned(const se23_geo_frame_t *frame, const se23_geo_t *f
     geo_angles_t g;
     geo_angles(frame, dlat, dlon, &g);
     geo_point_t pt;
-    geo_offset(frame, &g, dh_mm, &pt);
+    geo_offset(frame, &g, (int32_t)dh_mm, &pt); /* |dh_mm| <= 2e8: checked */
     if (ned_in_range(&pt.p_n) == 0) {
         return SE23_ERR_DOMAIN;
     }
@@ -453,12 +490,19 @@ se23_status_t se23_geo_to_ned(const se23_geo_frame_t *frame, const se23_geo_t *f
     return SE23_OK;
 }
 
-/* round(x) as an integer, |x| <= GEO_STEP_MAX checked by the caller. */
+/* round(x) as an integer, |x| <= GEO_STEP_MAX < 2^37 checked by the
+ * caller, without a real -> int64 routine (libgcc's float one works in
+ * double): xr = x + 1/2 away from 0, truncated as t1 2^16 + t0, t1 the
+ * truncation of xr 2^-16 (exact scaling, |t1| < 2^22), then xr - t1 2^16
+ * (exact: the low bits of xr, of its sign, below 2^16) truncated. */
 static int64_t round64(se23_real_t x)
 {
     const se23_real_t half = (x < SE23_R(0)) ? SE23_R(-0.5) : SE23_R(0.5);
     const se23_real_t xr = x + half;
-    return (int64_t)xr;
+    const int32_t t1 = (int32_t)(xr * GEO_2M16);
+    const se23_real_t low = xr - (se23_real_t)t1 * GEO_2P16;
+    const int32_t t0 = (int32_t)low;
+    return (int64_t)t1 * (INT64_C(1) << GEO_SPLIT_BITS) + (int64_t)t0;
 }
 
 /* x clamped to [-lim, lim]. */
@@ -519,7 +563,7 @@ static se23_status_t geo_invert(const se23_geo_frame_t *fr, const se23_vec3_t *p
     for (int k = 0; k <= GEO_NEWTON; k++) {
         geo_angles(fr, dd[0], dd[1], g);
         geo_point_t pt;
-        geo_offset(fr, g, dd[2], &pt);
+        geo_offset(fr, g, (int32_t)dd[2], &pt); /* clamped: |dd[2]| <= 2e8 */
         se23_v3_axpy(p_n, SE23_R(-1), &pt.p_n, &r);
         if (k == GEO_NEWTON) {
             break;
@@ -530,7 +574,7 @@ static se23_status_t geo_invert(const se23_geo_frame_t *fr, const se23_vec3_t *p
         geo_axes(fr, g, &ax);
         se23_vec3_t loc;
         se23_m3_mul_v3(&ax, &r, &loc);
-        const se23_real_t h = mm_to_m((int64_t)fr->origin.h_mm + dd[2]);
+        const se23_real_t h = mm_to_m(fr->origin.h_mm + (int32_t)dd[2]);
         const se23_real_t m_h =
             GEO_A * (SE23_R(1) - GEO_E2) / (pt.w * pt.w * pt.w) + h;
         const se23_real_t e_rad = pt.nh * g->c.hi;
