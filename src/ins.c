@@ -82,7 +82,8 @@ static se23_status_t config_check(const se23_ins_config_t *cfg)
         cfg->zupt_sigma_v, cfg->zaru_sigma_w, cfg->zaru_after, cfg->floor_sigma,
         cfg->floor_step, cfg->floor_swing, cfg->motion.gyro_scale, cfg->motion.accel_scale,
         cfg->motion.gyro_g, cfg->motion.corr_time, cfg->zupt_lever, cfg->nhc_sigma,
-        cfg->nhc_interval, cfg->rest_speed_max, cfg->rest_accel_sigma, cfg->gravity_step};
+        cfg->nhc_interval, cfg->rest_speed_max, cfg->rest_accel_sigma, cfg->gravity_step,
+        cfg->nhc_lever};
     const se23_real_t signed_reals[] = {
         cfg->lat, cfg->height, cfg->lever_b.v[0], cfg->lever_b.v[1], cfg->lever_b.v[2],
         cfg->mount_bv.v[0], cfg->mount_bv.v[1], cfg->mount_bv.v[2], cfg->gnss_time_offset};
@@ -121,6 +122,7 @@ static se23_status_t config_check(const se23_ins_config_t *cfg)
      * at least once a minute, a GNSS clock within a second of the IMU's */
     if ((se23_v3_dot(&cfg->mount_bv, &cfg->mount_bv) > (SE23_R(4) * (SE23_PI * SE23_PI))) ||
         (cfg->nhc_sigma > SE23_MEAS_NHC_SIGMA_MAX) || (cfg->rest_speed_max > SE23_INS_VEL_MAX) ||
+        (cfg->nhc_lever > SE23_R(10)) ||
         ((cfg->nhc_sigma > SE23_R(0)) &&
          ((cfg->nhc_interval <= SE23_R(0)) || (cfg->nhc_interval > SE23_R(60)))) ||
         (se23_fabs(cfg->gnss_time_offset) > SE23_R(1)) ||

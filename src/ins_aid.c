@@ -242,11 +242,24 @@ int se23_ins_zupt(se23_ins_t *ins, const se23_imu_sample_t *s, int rest)
     return 1;
 }
 
+/* The NHC's 1-sigma (ins.h, "Vehicles"): sqrt(nhc_sigma^2 + (nhc_lever
+ * |w|)^2), w the body rate of the last sample (bias-corrected): an IMU
+ * nhc_lever from the rear axle moves sideways at the yaw rate times that,
+ * and up or down at the pitch rate times it. 6 multiply-adds and a
+ * square root. */
+static se23_real_t nhc_sigma(const se23_ins_t *ins)
+{
+    const se23_real_t s0 = ins->cfg.nhc_sigma, l = ins->cfg.nhc_lever;
+    se23_vec3_t w;
+    se23_ins_body_rate(ins, &w);
+    return se23_sqrt((s0 * s0) + ((l * l) * se23_v3_dot(&w, &w)));
+}
+
 int se23_ins_nhc(se23_ins_t *ins)
 {
     se23_status_t st = user_state(ins);
     if (st == SE23_OK) {
-        st = se23_meas_nhc(&ins->work.T, &ins->C_bv, ins->cfg.nhc_sigma, &ins->meas);
+        st = se23_meas_nhc(&ins->work.T, &ins->C_bv, nhc_sigma(ins), &ins->meas);
     }
     if (st == SE23_OK) {
         st = update_work(ins, NULL);

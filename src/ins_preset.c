@@ -239,12 +239,15 @@ se23_status_t se23_ins_preset_car(se23_real_t rate_hz, se23_real_t lat,
     c.zaru_sigma_w = SE23_R(3) * DEG;
     c.zaru_after = SE23_R(1);
     /* The non-holonomic constraint: the rear tyres' slip angle stays below
-     * 1 deg up to 0.3 g of lateral acceleration (0.17 m/s at 10 m/s), and
-     * an IMU 1-2 m ahead of the rear axle moves sideways at the yaw rate
-     * times that (0.2-0.5 m/s in a parking-lot turn); the body heaves on
-     * its suspension at a few cm/s: 1-sigma 0.3 m/s. These last as long
-     * as a manoeuvre, about a second: one update per second. */
-    c.nhc_sigma = SE23_R(0.3);
+     * 1 deg up to 0.3 g of lateral acceleration (0.17 m/s at 10 m/s) and
+     * the body heaves on its suspension at a few cm/s: 1-sigma 0.2 m/s at
+     * the rear axle. An IMU anywhere in a car is within 2 m of it (a
+     * wheelbase is 2.5-3 m): it moves sideways at up to 2 m times the yaw
+     * rate (0.6 m/s in a parking-lot turn at 0.3 rad/s), nhc_lever 2 m.
+     * These last as long as a manoeuvre, about a second: one update per
+     * second. */
+    c.nhc_sigma = SE23_R(0.2);
+    c.nhc_lever = SE23_R(2);
     c.nhc_interval = SE23_R(1);
     /* Alignment: 2 s at rest (a car may leave its parking space 3 s after
      * power-up); heading from the GNSS course above 3 m/s (10 km/h: the

@@ -108,8 +108,8 @@
  * any fix within the horizon has a snapshot before it. Fusing a fix stamped
  * d seconds late costs the replay of up to d + delay_horizon seconds of
  * samples (prediction and the zero-velocity updates), in that call.
- * Memory: sizeof(se23_ins_t) = 17,984 B + SE23_INS_RING x 72 B in double,
- * 9,240 B + SE23_INS_RING x 48 B in float (27,200 / 15,384 B with the
+ * Memory: sizeof(se23_ins_t) = 17,992 B + SE23_INS_RING x 72 B in double,
+ * 9,240 B + SE23_INS_RING x 48 B in float (27,208 / 15,384 B with the
  * default ring; README "The navigation filter"; test_ins.c asserts it),
  * the kernels' work areas included (1,512 / 756 B, kept here and not on
  * the stack of the calls);
@@ -195,8 +195,11 @@
  * that starts a new nhc_interval (its time and the previous sample's in
  * different multiples of nhc_interval: the same samples in a replay)
  * applies the non-holonomic constraint, lateral and vertical velocity 0 in
- * the vehicle frame, 1-sigma nhc_sigma (se23_meas_nhc: the mounting C_bv =
- * exp(mount_bv^) turns the body frame into the vehicle's). Its error, the
+ * the vehicle frame, 1-sigma sqrt(nhc_sigma^2 + (nhc_lever |w|)^2)
+ * (se23_meas_nhc: the mounting C_bv = exp(mount_bv^) turns the body frame
+ * into the vehicle's). The constraint holds at the rear axle; an IMU
+ * nhc_lever from it moves sideways at the yaw rate times that in a turn
+ * (and up or down at the pitch rate), w = w_meas + b_g. Its error, the
  * sideslip of the tyres and the body's roll and heave on its suspension,
  * stays the same over about a second, so one update per nhc_interval
  * carries what it knows and no more. Counted in nhc_used. The course
@@ -438,6 +441,8 @@ typedef struct {
     se23_real_t nhc_sigma;      /**< 1-sigma of the vehicle frame's lateral and
                                  *   vertical velocity [m/s] (non-holonomic constraint,
                                  *   "Vehicles"; 0: off) */
+    se23_real_t nhc_lever;      /**< distance [m] the IMU may be from the rear axle:
+                                 *   the NHC's 1-sigma grows with the rate ("Vehicles") */
     se23_real_t nhc_interval;   /**< time between two NHC updates [s]: how long the
                                  *   constraint's error (sideslip, suspension) stays
                                  *   the same (nhc_sigma > 0) */

@@ -6,8 +6,8 @@
 # double and in float), its figures held within 25 % of those measured
 # (README "Real drives", this machine): with every fix the median
 # horizontal error against the RTK truth 0.011 m (bound 0.014); the median
-# end error of the outages with the non-holonomic constraint 2.75 / 1.58 /
-# 1.63 % of the distance for 10 / 30 / 60 s (bounds 3.4 / 2.0 / 2.0); float
+# end error of the outages with the non-holonomic constraint 3.47 / 1.78 /
+# 1.69 % of the distance for 10 / 30 / 60 s (bounds 4.3 / 2.2 / 2.1); float
 # within 10 % of double on each. Without the constraint the 30 s outages'
 # median is 13.9 %: the bound that holds with it must fail. One aided run
 # under valgrind. The programs are built by 60-harness.sh.
@@ -15,14 +15,14 @@ DB="$BUILD/harness/bin"
 DR="$BUILD/harness/drive"
 check drive-selftest sh tools/drive/selftest.sh "$BUILD/harness"
 check drive-shipped sh -c 'sh tools/drive/demo-drive.sh "$1" >/dev/null &&
-    /usr/bin/python3 tools/drive/summary.py --max-pct 10:3.4,30:2.0,60:2.0 \
+    /usr/bin/python3 tools/drive/summary.py --max-pct 10:4.3,30:2.2,60:2.1 \
         --max-float-ratio 0.1 "$2" &&
     "$3/se23-drive" --lever 0,-0.05,0 --max-aided-h50 0.014 --max-nees-beyond 0.13 "$2/aided.log" \
         "$2/aided-double.log" && "$3/se23-drive" --lever 0,-0.05,0 --max-aided-h50 0.014 \
         "$2/aided.log" "$2/aided-float.log"' sh "$BUILD/harness" "$DR" "$DB"
 # shellcheck disable=SC2016 # expanded by the inner shell
 check drive-no-nhc-fails-bound sh -c '! "$1/se23-drive" --lever 0,-0.05,0 \
-    --max-outage-pct 2.0 "$2/o30.log" "$2/o30-none-double.log"' sh "$DB" "$DR"
+    --max-outage-pct 2.2 "$2/o30.log" "$2/o30-none-double.log"' sh "$DB" "$DR"
 d_valgrind() {
     . tools/drive/rtklibexplorer-0708.conf
     $VALGRIND --suppressions=tools/lcm/valgrind-lcm.supp "$DB/se23-ins" --preset car \

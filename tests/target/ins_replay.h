@@ -102,7 +102,7 @@ extern const insr_threshold_t insr_thresholds[];
 extern const int insr_n_thresholds;
 
 /** Reals and integers of a configuration with its alignment request. */
-#define INSR_FLAT_REALS 55
+#define INSR_FLAT_REALS 56
 #define INSR_FLAT_INTS 8
 
 /** r, iv = every real and every integer field of c and a, in a fixed

@@ -166,7 +166,7 @@ void insr_flatten(const se23_ins_config_t *c, const se23_ins_align_t *a,
         a->course_speed, a->course_sigma, c->motion.gyro_scale, c->motion.accel_scale,
         c->motion.gyro_g, c->motion.corr_time, c->zupt_lever, c->rest_speed_max,
         c->mount_bv.v[0], c->mount_bv.v[1], c->mount_bv.v[2], c->nhc_sigma, c->nhc_interval,
-        c->gnss_time_offset, c->height, c->gravity_step, c->rest_accel_sigma};
+        c->gnss_time_offset, c->height, c->gravity_step, c->rest_accel_sigma, c->nhc_lever};
     const int ints[INSR_FLAT_INTS] = {c->earth_rotation, c->bias_states, c->gate_recover,
                                       c->zupt, c->detector.window, a->gyrocompass,
                                       c->gravity_test_off, a->measure_noise};

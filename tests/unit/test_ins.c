@@ -88,6 +88,7 @@ static void m_mount_big(se23_ins_config_t *c) { c->mount_bv.v[2] = SE23_R(6.3); 
 static void m_mount_nan(se23_ins_config_t *c) { c->mount_bv.v[0] = (se23_real_t)NAN; }
 static void m_nhc_neg(se23_ins_config_t *c) { c->nhc_sigma = SE23_R(-0.3); }
 static void m_nhc_big(se23_ins_config_t *c) { c->nhc_sigma = SE23_R(2e3); }
+static void m_nhc_lever(se23_ins_config_t *c) { c->nhc_lever = SE23_R(11); }
 static void m_nhc_no_interval(se23_ins_config_t *c) { c->nhc_sigma = SE23_R(0.3); }
 static void m_nhc_long_interval(se23_ins_config_t *c)
 {
@@ -105,7 +106,7 @@ static void test_ins_memory_is_as_documented(void **state)
     (void)state;
 #if SE23_CFG_DOUBLE
     assert_int_equal(sizeof(se23_ins_hist_t), 72);
-    assert_int_equal(sizeof(se23_ins_t), 17984 + SE23_INS_RING * 72);
+    assert_int_equal(sizeof(se23_ins_t), 17992 + SE23_INS_RING * 72);
 #else
     assert_int_equal(sizeof(se23_ins_hist_t), 48);
     assert_int_equal(sizeof(se23_ins_t), 9240 + SE23_INS_RING * 48);
@@ -140,6 +141,7 @@ static void test_setup_rejects_each_bad_field_and_writes_nothing(void **state)
         {m_mount_nan, SE23_ERR_NONFINITE},
         {m_nhc_neg, SE23_ERR_DOMAIN},
         {m_nhc_big, SE23_ERR_DOMAIN},
+        {m_nhc_lever, SE23_ERR_DOMAIN},
         {m_nhc_no_interval, SE23_ERR_DOMAIN},
         {m_nhc_long_interval, SE23_ERR_DOMAIN},
         {m_offset_big, SE23_ERR_DOMAIN},

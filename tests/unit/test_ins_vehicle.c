@@ -95,6 +95,48 @@ static void test_nhc_pulls_lateral_velocity_to_zero(void **state)
     assert_true(fabs(vel_var(&with, 0) / vel_var(&without, 0) - 1.0) < 0.01);
 }
 
+/* nhc_lever: in a turn (yaw rate 0.5 rad/s) the constraint's 1-sigma is
+ * sqrt(0.3^2 + (2 m x 0.5)^2) = 1.04 m/s, so after the first update (1 s)
+ * the lateral velocity's variance stays larger than with nhc_lever 0; on
+ * a straight (no rate) the two runs are the same, value for value. */
+static void test_nhc_lever_weakens_the_constraint_in_turns(void **state)
+{
+    (void)state;
+    const double v0[3] = {10.0, 0.0, 0.0};
+    const double g = it_gravity();
+    for (int turning = 0; turning <= 1; ++turning) {
+        se23_gauss_t out[2];
+        int64_t t;
+        for (int lever = 0; lever <= 1; ++lever) {
+            se23_ins_config_t c;
+            se23_gauss_t init;
+            it_config(&c, 1);
+            c.zupt = 0;
+            c.nhc_sigma = SE23_R(0.3);
+            c.nhc_interval = SE23_R(1);
+            c.nhc_lever = (lever != 0) ? SE23_R(2) : SE23_R(0);
+            assert_int_equal(se23_ins_setup(&c, &ins), SE23_OK);
+            it_initial(15, 1e-3, 1.0, 1.0, &init);
+            for (int i = 0; i < 3; ++i) {
+                init.T.v.v[i] = (se23_real_t)v0[i];
+            }
+            assert_int_equal(se23_ins_init(&ins, 0, &init), SE23_OK);
+            for (int k = 1; k <= 200; ++k) {
+                const se23_vec3_t w = {{0, 0, (se23_real_t)(turning ? 0.5 : 0.0)}};
+                const se23_vec3_t f = {{0, (se23_real_t)(turning ? 5.0 : 0.0), (se23_real_t)-g}};
+                assert_int_equal(se23_ins_imu(&ins, k * IT_DT_NS, k, &w, &f), SE23_INS_USED);
+            }
+            assert_int_equal(ins.c.nhc_used, 1);
+            assert_int_equal(se23_ins_state(&ins, &out[lever], &t), SE23_OK);
+        }
+        if (turning) {
+            assert_true(vel_var(&out[1], 1) > 2.0 * vel_var(&out[0], 1));
+        } else {
+            assert_memory_equal(&out[0].P, &out[1].P, sizeof out[0].P);
+        }
+    }
+}
+
 /* The NHC samples are a function of time alone: a run cut into two calls
  * of the same samples, or started at another sample, applies them at the
  * multiples of nhc_interval: 3 updates in (0, 3.5 s], 2 in (3.5, 5.5]. */
@@ -321,6 +363,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_nhc_pulls_lateral_velocity_to_zero),
         cmocka_unit_test(test_nhc_at_whole_intervals),
+        cmocka_unit_test(test_nhc_lever_weakens_the_constraint_in_turns),
         cmocka_unit_test(test_gnss_time_offset_moves_the_fix),
         cmocka_unit_test(test_rest_speed_max_keeps_a_cruise_moving),
         cmocka_unit_test(test_rest_accel_sigma_lets_a_car_pull_away),

@@ -28,7 +28,7 @@ static struct {
     se23_preint_unc_t factor;
     se23_meas_t y;
     se23_vec3_t p_gnss, lever;
-    se23_mat3_t cov;
+    se23_mat3_t cov, C_bv;
 } c;
 
 static void set_gauss(se23_gauss_t *g, int n)
@@ -65,6 +65,10 @@ static void setup(void)
     c.noise.gyro_walk = SE23_R(1e-6);
     c.noise.accel_walk = SE23_R(1e-5);
     (void)se23_so3_exp(&phi, &c.T.R);
+    {
+        const se23_vec3_t mount = {{SE23_R(0.1), SE23_R(-0.12), SE23_R(1.6)}};
+        (void)se23_so3_exp(&mount, &c.C_bv);
+    }
     c.T.v.v[0] = SE23_R(10);
     c.T.v.v[1] = SE23_R(1);
     c.T.p.v[0] = SE23_R(100);
@@ -95,6 +99,13 @@ static int step_cov15(void)
 static int update_gnss15(void)
 {
     se23_status_t st = se23_meas_pos_nav(&c.g15.T, &c.p_gnss, &c.lever, &c.cov, &c.y);
+    return st != SE23_OK ? (int)st : (int)se23_kalman_update(&c.g15, &c.y, &c.gout, NULL);
+}
+/* Composite: one non-holonomic constraint update (model + Kalman update,
+ * 2 rows), n = 15, the IMU mounted turned (C_bv = exp of 0.1, -0.12, 1.6). */
+static int update_nhc15(void)
+{
+    se23_status_t st = se23_meas_nhc(&c.g15.T, &c.C_bv, SE23_R(0.3), &c.y);
     return st != SE23_OK ? (int)st : (int)se23_kalman_update(&c.g15, &c.y, &c.gout, NULL);
 }
 /* Composite: one sample into a preintegrated factor (Deltas, P, J; no
@@ -259,6 +270,8 @@ const bench_step_t bench_steps[] = {
     {"STEP mean+cov n=15, basic B (se23_gauss_predict)", setup, step_cov15_basic},
     {"STEP preintegration (se23_preint_unc_add, exact B, no classical Jacobians)", setup, step_preint},
     {"UPDATE GNSS position n=15 (se23_meas_pos_nav + se23_kalman_update)", setup, update_gnss15},
+    {"UPDATE non-holonomic constraint n=15 (se23_meas_nhc + se23_kalman_update)", setup,
+     update_nhc15},
     {"FILTER sample n=15, predict only, detector off (se23_ins_imu)", prepare_ins_predict,
      ins_predict},
     {"FILTER sample n=15 at rest, predict + rest tests + ZUPT + ZARU (se23_ins_imu)",

@@ -46,8 +46,9 @@ void gen_print_config(const se23_ins_config_t *c)
     printf("   .floor_sigma = %.17g, .floor_step = %.17g, .floor_swing = %.17g,\n  ",
            c->floor_sigma, c->floor_step, c->floor_swing);
     gen_vec("mount_bv", &c->mount_bv);
-    printf("\n   .nhc_sigma = %.17g, .nhc_interval = %.17g, .gnss_time_offset = %.17g},\n",
-           c->nhc_sigma, c->nhc_interval, c->gnss_time_offset);
+    printf("\n   .nhc_sigma = %.17g, .nhc_lever = %.17g, .nhc_interval = %.17g,\n",
+           c->nhc_sigma, c->nhc_lever, c->nhc_interval);
+    printf("   .gnss_time_offset = %.17g},\n", c->gnss_time_offset);
 }
 
 void gen_print_align(const se23_ins_align_t *a)
