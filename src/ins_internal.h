@@ -104,8 +104,10 @@ void se23_ins_factor_reset(se23_ins_t *ins);
  * The rest updates sample s (dt_ns after the last accepted one) calls for:
  * SE23_INS_REST_NONE (moving, or no ZUPT configured), SE23_INS_REST_ZUPT,
  * or SE23_INS_REST_ZARU once the rest has lasted zaru_after; with floor
- * updates, SE23_INS_REST_FLOOR added when a stance begins. Feeds the
- * detector (ins_rest.c).
+ * updates, SE23_INS_REST_FLOOR added when a stance begins; moving,
+ * SE23_INS_REST_NHC when the sample starts a new nhc_interval. Feeds the
+ * detector (ins_rest.c). The replay applies the same updates after the
+ * same samples (the ring keeps the verdict).
  */
 int se23_ins_rest_level(se23_ins_t *ins, const se23_imu_sample_t *s, int64_t dt_ns);
 

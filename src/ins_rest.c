@@ -155,6 +155,18 @@ static int stationary_window(se23_ins_t *ins, const se23_imu_sample_t *s)
     return (accel_nis(ins, &ins->det.fbar, &f) < ACCEL_TEST_Q) ? 1 : 0;
 }
 
+/* SE23_INS_REST_NHC if the sample ending dt_ns after the state starts a new
+ * nhc_interval (ins.h, "Vehicles"), else SE23_INS_REST_NONE. */
+static int nhc_due(const se23_ins_t *ins, int64_t dt_ns)
+{
+    if (!(ins->cfg.nhc_sigma > SE23_R(0))) {
+        return SE23_INS_REST_NONE;
+    }
+    return ((ins->t_ns / ins->nhc_interval_ns) != ((ins->t_ns + dt_ns) / ins->nhc_interval_ns))
+               ? SE23_INS_REST_NHC
+               : SE23_INS_REST_NONE;
+}
+
 int se23_ins_rest_level(se23_ins_t *ins, const se23_imu_sample_t *s, int64_t dt_ns)
 {
     int rest;
@@ -164,7 +176,7 @@ int se23_ins_rest_level(se23_ins_t *ins, const se23_imu_sample_t *s, int64_t dt_
         if (ins->move_ns < ins->floor_swing_ns) {
             ins->move_ns += dt_ns;
         }
-        return SE23_INS_REST_NONE;
+        return nhc_due(ins, dt_ns);
     }
     if (ins->rest_ns < ins->zaru_after_ns) {
         ins->rest_ns += dt_ns;

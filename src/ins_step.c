@@ -2,31 +2,21 @@
  * preintegrated factor; see ins.h. */
 #include "ins_internal.h"
 
-/* Nonzero if the sample ending at t_ns starts a new nhc_interval (ins.h,
- * "Vehicles"): a function of the times alone, so a replay applies the
- * constraint at the same samples. */
-static int nhc_due(const se23_ins_t *ins, int64_t t_prev_ns, int64_t t_ns)
-{
-    return (ins->cfg.nhc_sigma > SE23_R(0)) &&
-           ((t_prev_ns / ins->nhc_interval_ns) != (t_ns / ins->nhc_interval_ns));
-}
-
 int se23_ins_step(se23_ins_t *ins, int64_t t_ns, const se23_imu_sample_t *s, int rest)
 {
-    const int64_t t_prev_ns = ins->t_ns;
     if (se23_ins_predict_interval(ins, s) == 0) {
         return 0;
     }
-    se23_ins_gravity_follow(ins); /* for the next step: the position it reached */
     ins->t_ns = t_ns;
     ins->last = *s;
     ins->have_last = 1;
-    if (rest != SE23_INS_REST_NONE) {
+    if ((rest & SE23_INS_REST_LEVEL) != SE23_INS_REST_NONE) {
         ins->status |= SE23_INS_ST_STATIONARY;
         (void)se23_ins_zupt(ins, s, rest); /* a failure is counted; the prediction stands */
     } else {
         ins->status &= ~SE23_INS_ST_STATIONARY;
-        if (nhc_due(ins, t_prev_ns, t_ns) != 0) {
+        se23_ins_gravity_follow(ins); /* the position it reached (at rest it stays) */
+        if ((rest & SE23_INS_REST_NHC) != 0) {
             (void)se23_ins_nhc(ins); /* a failure is counted; the prediction stands */
         }
     }

@@ -488,13 +488,15 @@ typedef struct {
 
 /** What the detector made of a sample: the updates applied after it, a
  *  level (NONE, ZUPT, ZARU) with the FLOOR flag on the first stationary
- *  sample of a stance when floor updates are configured. */
+ *  sample of a stance when floor updates are configured, or, moving, the
+ *  NHC flag when the constraint is due ("Vehicles"). */
 enum {
     SE23_INS_REST_NONE = 0,  /**< moving */
     SE23_INS_REST_ZUPT = 1,  /**< stationary: zero velocity */
     SE23_INS_REST_ZARU = 2,  /**< at rest for zaru_after: zero velocity and rate */
     SE23_INS_REST_LEVEL = 3, /**< mask of the level */
-    SE23_INS_REST_FLOOR = 4  /**< flag: a stance begins: the floor update too */
+    SE23_INS_REST_FLOOR = 4, /**< flag: a stance begins: the floor update too */
+    SE23_INS_REST_NHC = 8    /**< flag (moving): the non-holonomic constraint is due */
 };
 
 /** A stored state for the replay of delayed fixes. */
