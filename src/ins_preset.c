@@ -21,82 +21,103 @@ se23_real_t se23_ins_detector_threshold(int window, se23_real_t z)
     return (k * h * h * h) / (se23_real_t)window;
 }
 
-se23_status_t se23_ins_preset_foot(se23_real_t rate_hz, se23_real_t lat,
-                                   se23_ins_config_t *cfg, se23_ins_align_t *align)
+/*
+ * What the presets share: the rate and the latitude checked (lat by
+ * se23_earth_gravity's rule, earth.h, the one se23_ins_setup applies, so a
+ * preset's configuration always passes it), *c zeroed, and a consumer MEMS
+ * sensor at rate_hz on 15 states: in-run bias walks of 1e-5 rad/s and
+ * 1e-4 m/s^2 per sqrt(s) (a few deg/h and 0.1-0.3 mg over minutes), range
+ * 2000 deg/s and 16 g per axis; in motion the class errs by about 1 % of
+ * what it measures (sensitivity tolerance and cross-axis sensitivity, each
+ * about 1 %) and its gyro by 0.1 deg/s per g (g-sensitivity); lost samples
+ * bridged up to 50 ms, outages carried up to 1 s; ZUPT with a detector at
+ * lat's gravity. The caller adds the densities, corr_time and the rest.
+ */
+static se23_status_t consumer_mems(se23_real_t rate_hz, se23_real_t lat, se23_ins_config_t *c)
 {
     const se23_ins_config_t none = {0};
-    const se23_ins_align_t no_align = {0};
-    se23_ins_config_t c = none;
-    se23_ins_align_t a = no_align;
     se23_real_t g = SE23_R(0);
     se23_status_t st;
-    SE23_CHECK_NOT_NULL(cfg);
-    SE23_CHECK_NOT_NULL(align);
     if (!((rate_hz >= SE23_R(50)) && (rate_hz <= SE23_R(10000)))) {
         return SE23_ERR_DOMAIN;
     }
-    /* lat: se23_earth_gravity's rule (earth.h), the one se23_ins_setup
-     * applies, so the configuration below always passes it */
     st = se23_earth_gravity(lat, SE23_R(0), &g);
     if (st != SE23_OK) {
         return st;
     }
-    /* The sensor: consumer MEMS class data-sheet values (e.g. the
-     * Bosch BMI160 / TDK ICM-20602 class an NGIMU-like unit carries):
-     * gyro 0.007 deg/s/sqrt(Hz), accelerometer 180 ug/sqrt(Hz), in-run
-     * bias walks of a few deg/h and mg over a minute, range 2000 deg/s
-     * and 16 g. Flat Earth: the Earth rate (0.004 deg/s) is below the
-     * gyro's noise over a walk. In motion the same class errs by about
-     * 1 % of what it measures (sensitivity tolerance and cross-axis
-     * sensitivity, each about 1 %, of a swing's 5-10 rad/s and 2-10 g)
-     * and its gyro by 0.1 deg/s per g of acceleration (g-sensitivity);
-     * a stride's rates and accelerations keep their sign for about a
-     * quarter of a 0.4 s swing: corr_time 0.1 s (ins.h, "Motion
-     * noise"). */
+    *c = none;
+    c->noise.gyro_walk = SE23_R(1e-5);
+    c->noise.accel_walk = SE23_R(1e-4);
+    c->motion.gyro_scale = SE23_R(0.01);
+    c->motion.accel_scale = SE23_R(0.01);
+    c->motion.gyro_g = (SE23_R(0.1) * DEG) / SE23_R(9.80665);
+    c->gyro_range = SE23_R(2000) * DEG;
+    c->accel_range = SE23_R(16) * SE23_R(9.80665);
+    c->lat = lat;
+    c->bias_states = 1;
+    c->dt_nominal = SE23_R(1) / rate_hz;
+    c->max_gap = SE23_R(0.05);
+    c->max_outage = SE23_R(1);
+    c->zupt = 1;
+    c->detector.gravity = g;
+    return SE23_OK;
+}
+
+/* The detector's window of `seconds` at rate_hz, rounded, within [2,
+ * SE23_STATIONARY_WMAX] samples, and its threshold: one false "moving"
+ * window in 100 (Z_099). */
+static void detector_window(se23_real_t rate_hz, se23_real_t seconds, se23_ins_config_t *c)
+{
+    const se23_real_t w = (seconds * rate_hz) + SE23_R(0.5);
+    if (w < SE23_R(2)) {
+        c->detector.window = 2;
+    } else if (w > (se23_real_t)SE23_STATIONARY_WMAX) {
+        c->detector.window = SE23_STATIONARY_WMAX;
+    } else {
+        c->detector.window = (int)w;
+    }
+    c->detector.threshold = se23_ins_detector_threshold(c->detector.window, Z_099);
+}
+
+se23_status_t se23_ins_preset_foot(se23_real_t rate_hz, se23_real_t lat,
+                                   se23_ins_config_t *cfg, se23_ins_align_t *align)
+{
+    const se23_ins_align_t no_align = {0};
+    se23_ins_config_t c;
+    se23_ins_align_t a = no_align;
+    se23_status_t st;
+    SE23_CHECK_NOT_NULL(cfg);
+    SE23_CHECK_NOT_NULL(align);
+    st = consumer_mems(rate_hz, lat, &c);
+    if (st != SE23_OK) {
+        return st;
+    }
+    /* The sensor (consumer_mems): data-sheet densities of the Bosch
+     * BMI160 / TDK ICM-20602 class an NGIMU-like unit carries, gyro 0.007
+     * deg/s/sqrt(Hz), accelerometer 180 ug/sqrt(Hz). Flat Earth: the Earth
+     * rate (0.004 deg/s) is below the gyro's noise over a walk. A stride's
+     * rates (5-10 rad/s) and accelerations (2-10 g) keep their sign for
+     * about a quarter of a 0.4 s swing: corr_time 0.1 s (ins.h, "Motion
+     * noise"). Lost samples: a lost sample or twenty, not a swing. */
     c.noise.gyro_noise = SE23_R(0.007) * DEG;
     c.noise.accel_noise = SE23_R(180e-6) * SE23_R(9.80665);
-    c.noise.gyro_walk = SE23_R(1e-5);
-    c.noise.accel_walk = SE23_R(1e-4);
-    c.motion.gyro_scale = SE23_R(0.01);
-    c.motion.accel_scale = SE23_R(0.01);
-    c.motion.gyro_g = (SE23_R(0.1) * DEG) / SE23_R(9.80665);
     c.motion.corr_time = SE23_R(0.1);
-    c.gyro_range = SE23_R(2000) * DEG;
-    c.accel_range = SE23_R(16) * SE23_R(9.80665);
-    c.lat = lat;
     c.earth_rotation = 0;
-    c.bias_states = 1;
-    c.dt_nominal = SE23_R(1) / rate_hz;
-    c.max_gap = SE23_R(0.05);   /* a lost sample or twenty, not a swing */
-    c.max_outage = SE23_R(1);
     c.outage_accel = SE23_R(10); /* a swinging foot: ~1 g, ~5 rad/s */
     c.outage_rate = SE23_R(5);
     c.gnss_gate = SE23_R(0);
-    /* The detector: a window of 12.5 ms, a quarter of the shortest stance
-     * (45-70 ms), so that every stance holds windows wholly inside it. Its
-     * sigmas are not the sensor noise but what a foot in stance still
-     * shows: it rolls from heel to toe, at 7-13 deg/s at a stroll and
-     * about twice that at a brisk walk (sigma_g 20 deg/s), and its
-     * sensor, 0.2 m from the point it rolls about, accelerates by that
-     * roll's changes (a few rad/s^2 x 0.2 m: sigma_a 0.6 m/s^2); the
-     * threshold is the chi^2_{6W-2} quantile for one false "moving"
-     * window in 100 at that level of motion. */
-    c.zupt = 1;
-    {
-        const se23_real_t w = (SE23_R(0.0125) * rate_hz) + SE23_R(0.5);
-        c.detector.window = (int)w;
-    }
-    if (c.detector.window < 2) {
-        c.detector.window = 2;
-    } else if (c.detector.window > SE23_STATIONARY_WMAX) {
-        c.detector.window = SE23_STATIONARY_WMAX; /* above 2.6 kHz: shorter than 12.5 ms */
-    } else {
-        /* 12.5 ms */
-    }
+    /* The detector: a window of 12.5 ms (the most the detector holds above
+     * 2.6 kHz), a quarter of the shortest stance (45-70 ms), so that every
+     * stance holds windows wholly inside it. Its sigmas are not the sensor
+     * noise but what a foot in stance still shows: it rolls from heel to
+     * toe, at 7-13 deg/s at a stroll and about twice that at a brisk walk
+     * (sigma_g 20 deg/s), and its sensor, 0.2 m from the point it rolls
+     * about, accelerates by that roll's changes (a few rad/s^2 x 0.2 m:
+     * sigma_a 0.6 m/s^2); the threshold is the chi^2_{6W-2} quantile for
+     * one false "moving" window in 100 at that level of motion. */
+    detector_window(rate_hz, SE23_R(0.0125), &c);
     c.detector.sigma_a = SE23_R(0.6);
     c.detector.sigma_g = SE23_R(20) * DEG;
-    c.detector.gravity = g;
-    c.detector.threshold = se23_ins_detector_threshold(c.detector.window, Z_099);
     c.gravity_test_off = 1; /* a foot has no smooth start (ins.h) */
     /* v = 0 to 2 cm/s, plus what the foot's roll gives: its sensor turns
      * at w about the point the foot rolls over, the heel or the ball of
@@ -154,50 +175,30 @@ se23_status_t se23_ins_preset_foot(se23_real_t rate_hz, se23_real_t lat,
 se23_status_t se23_ins_preset_car(se23_real_t rate_hz, se23_real_t lat,
                                   se23_ins_config_t *cfg, se23_ins_align_t *align)
 {
-    const se23_ins_config_t none = {0};
     const se23_ins_align_t no_align = {0};
-    se23_ins_config_t c = none;
+    se23_ins_config_t c;
     se23_ins_align_t a = no_align;
-    se23_real_t g = SE23_R(0);
     se23_status_t st;
     SE23_CHECK_NOT_NULL(cfg);
     SE23_CHECK_NOT_NULL(align);
-    if (!((rate_hz >= SE23_R(50)) && (rate_hz <= SE23_R(10000)))) {
-        return SE23_ERR_DOMAIN;
-    }
-    st = se23_earth_gravity(lat, SE23_R(0), &g);
+    st = consumer_mems(rate_hz, lat, &c);
     if (st != SE23_OK) {
         return st;
     }
-    /* The sensor: automotive-grade consumer MEMS, the class a GNSS module
-     * with dead reckoning or a telematics unit carries (e.g. Bosch
-     * SMI/BMI088, ST ASM330 class): gyro 0.01 deg/s/sqrt(Hz) and
-     * accelerometer 150 ug/sqrt(Hz), the upper end of their data sheets
-     * (a car's vibration adds to them); in-run bias walks of 1e-5 rad/s
-     * and 1e-4 m/s^2 per sqrt(s) (10 deg/h and 0.3 mg over 10 min, the
-     * class's instability plus a cabin's temperature change); range 2000
-     * deg/s, 16 g per axis. The same 1 % scale and cross-axis errors and
-     * 0.1 deg/s per g as any consumer part; a car's motions (a turn, a
-     * braking) last seconds: corr_time 1 s. Rotating Earth: over a
+    /* The sensor (consumer_mems): automotive-grade consumer MEMS, the class
+     * a GNSS module with dead reckoning or a telematics unit carries (e.g.
+     * Bosch SMI/BMI088, ST ASM330 class): gyro 0.01 deg/s/sqrt(Hz) and
+     * accelerometer 150 ug/sqrt(Hz), the upper end of their data sheets (a
+     * car's vibration adds to them); the bias walks (10 deg/h and 0.3 mg
+     * over 10 min) cover a cabin's temperature change. A car's motions (a
+     * turn, a braking) last seconds: corr_time 1 s. Rotating Earth: over a
      * minute's outage the Earth rate (15 deg/h) matters as much as the
      * bias. */
     c.noise.gyro_noise = SE23_R(0.01) * DEG;
     c.noise.accel_noise = SE23_R(150e-6) * SE23_R(9.80665);
-    c.noise.gyro_walk = SE23_R(1e-5);
-    c.noise.accel_walk = SE23_R(1e-4);
-    c.motion.gyro_scale = SE23_R(0.01);
-    c.motion.accel_scale = SE23_R(0.01);
-    c.motion.gyro_g = (SE23_R(0.1) * DEG) / SE23_R(9.80665);
     c.motion.corr_time = SE23_R(1);
-    c.gyro_range = SE23_R(2000) * DEG;
-    c.accel_range = SE23_R(16) * SE23_R(9.80665);
-    c.lat = lat;
     c.gravity_step = SE23_R(100); /* gravity follows the car (ins.h, "Frame") */
     c.earth_rotation = 1;
-    c.bias_states = 1;
-    c.dt_nominal = SE23_R(1) / rate_hz;
-    c.max_gap = SE23_R(0.05); /* a few lost samples */
-    c.max_outage = SE23_R(1);
     c.outage_accel = SE23_R(5); /* a car brakes and turns at up to 0.5 g */
     c.outage_rate = SE23_R(0.5);
     /* Fixes a quarter of a second late are fused at their own time, if
@@ -208,8 +209,9 @@ se23_status_t se23_ins_preset_car(se23_real_t rate_hz, se23_real_t lat,
     }
     /* The detector, for stops: a car at rest with its engine running
      * vibrates, on a roof bracket by up to a few deg/s and 1 m/s^2 at the
-     * sensor (sigma_g 3 deg/s, sigma_a 1.5 m/s^2); a window of 0.3 s holds
-     * several periods of an idling engine (10-30 Hz). So wide a detector
+     * sensor (sigma_g 3 deg/s, sigma_a 1.5 m/s^2); a window of 0.3 s (the
+     * most the detector holds above 107 Hz) holds several periods of an
+     * idling engine (10-30 Hz). So wide a detector
      * also calls a steady cruise on a smooth road rest (the IMU reads the
      * same): the filter's own speed must allow rest too (rest_speed_max
      * 0.5 m/s, a creep). At rest the car rocks on its suspension by a few
@@ -223,16 +225,9 @@ se23_status_t se23_ins_preset_car(se23_real_t rate_hz, se23_real_t lat,
      * rocks on its suspension by less; with that 1-sigma
      * (rest_accel_sigma 0.1 m/s^2) a car that pulls away is moving within
      * its first window. */
-    c.zupt = 1;
-    {
-        const se23_real_t w = (SE23_R(0.3) * rate_hz) + SE23_R(0.5);
-        c.detector.window = (w > (se23_real_t)SE23_STATIONARY_WMAX) ? SE23_STATIONARY_WMAX
-                                                                      : (int)w;
-    }
+    detector_window(rate_hz, SE23_R(0.3), &c);
     c.detector.sigma_a = SE23_R(1.5);
     c.detector.sigma_g = SE23_R(3) * DEG;
-    c.detector.gravity = g;
-    c.detector.threshold = se23_ins_detector_threshold(c.detector.window, Z_099);
     c.rest_speed_max = SE23_R(0.5);
     c.rest_accel_sigma = SE23_R(0.1);
     c.zupt_sigma_v = SE23_R(0.02) * se23_sqrt((se23_real_t)c.detector.window);
