@@ -51,7 +51,8 @@ $(TGT_INSR_GEN): tools/target/gen_ins_replay.c \
 # drivers tests/target/ins_replay_drive.c and walk_replay_drive.c run on
 # both sides).
 TGT_WALK_CSV := tools/data/xio-gait-tracking/short_walk.csv
-TGT_WALK_OBJS = $(patsubst %,$(TGT)/$(1)/%.o,walk_replay walk_replay_drive ins_replay_drive)
+TGT_WALK_OBJS = $(patsubst %,$(TGT)/$(1)/%.o,walk_replay walk_replay_drive walk_replay_check \
+                  ins_replay_drive)
 TGT_WALK_GEN_SRCS := tools/target/gen_walk_replay.c tools/target/gen_print.c \
                      tests/target/ins_replay_drive.c tests/target/walk_replay_drive.c \
                      tools/import/csv.c tools/import/row.c tools/import/hygiene.c \
@@ -67,6 +68,42 @@ $(TGT)/gen_walk_replay_$(1): $(TGT_WALK_GEN_SRCS) tools/target/gen_print.h \
 endef
 $(eval $(call tgt_walk_gen,float,0))
 $(eval $(call tgt_walk_gen,double,1))
+
+# A part of the real car drive replayed (tests/target/drive_replay.c): the
+# rtklibexplorer drive 0708's first 70 s (the rest, the alignment, the
+# heading from the course, 20 s of driving with fixes, the last 10 s
+# without) as se23-drive-import writes it with the drive's installation
+# (tools/drive/rtklibexplorer-0708.conf), and the host's run of the filter
+# through it in the image's precision, from tools/target/gen_drive_replay
+# (C, built once per precision; it reads the importer's LCM log with the
+# harness's log reader and decoders; the driver ins_replay_drive.c runs on
+# both sides, the checks walk_replay_check.c are the walk's).
+TGT_DRIVE_DATA := tools/data/car/rtklibexplorer-drive-0708
+TGT_DRIVE_LOG := $(TGT)/drive_replay.log
+TGT_DRIVE_IMPORT := $(BUILD)/harness/bin/se23-drive-import
+TGT_DRIVE_OBJS = $(patsubst %,$(TGT)/$(1)/%.o,drive_replay walk_replay_check ins_replay_drive)
+TGT_DRIVE_GEN_SRCS := tools/target/gen_drive_replay.c tools/target/gen_print.c \
+                      tests/target/ins_replay_drive.c tools/lcm/logfile.c
+$(TGT_DRIVE_LOG): $(TGT_DRIVE_IMPORT) $(wildcard $(TGT_DRIVE_DATA)/*) tools/drive/rtklibexplorer-0708.conf
+	mkdir -p $(@D)
+	. tools/drive/rtklibexplorer-0708.conf && $(TGT_DRIVE_IMPORT) --rtklib \
+	    $(TGT_DRIVE_DATA)/imu_1934.csv $(TGT_DRIVE_DATA)/imu_1934.csv.tag \
+	    $(TGT_DRIVE_DATA)/gnss_1934_sf.pos --axes="$$AXES" --imu-time-offset "$$IMU_TIME_OFFSET" \
+	    --duration 70 --outage 60,10 --out "file://$@?mode=w" > $(@:.log=-import.txt) 2>&1 || \
+	    { cat $(@:.log=-import.txt); rm -f $@; exit 1; }
+# $(call tgt_drive_gen,float|double,SE23_CFG_DOUBLE)
+define tgt_drive_gen
+$(TGT)/gen_drive_replay_$(1): $(TGT_DRIVE_GEN_SRCS) tools/target/gen_print.h tools/lcm/logfile.h \
+                              tools/lcm/harness.h tests/target/ins_replay.h \
+                              tests/target/drive_replay.h $(BUILD)/harness/libse23lcm.a \
+                              $(LIB_HDRS) $(BUILD)/lib-host-$(1)/libse23.a
+	mkdir -p $$(@D)
+	$(CC) $(WARN) -O2 -Iinclude -Itests/target -isystem $(BUILD)/harness/gen $$(LCM_CFLAGS) \
+	    -DSE23_CFG_DOUBLE=$(2) $(TGT_DRIVE_GEN_SRCS) $(BUILD)/harness/libse23lcm.a \
+	    $(BUILD)/lib-host-$(1)/libse23.a $$(LCM_LIBS) -lm -o $$@
+endef
+$(eval $(call tgt_drive_gen,float,0))
+$(eval $(call tgt_drive_gen,double,1))
 
 TGT_VARIANTS := m4f-float m7-double
 TGT_BOARD_m4f-float := mps2-an386
@@ -115,6 +152,16 @@ $(TGT)/$(1)/walk_replay_data_corrupt.c: $(TGT)/gen_walk_replay_$(if $(filter 1,$
 	mv $$@.tmp $$@
 $(TGT)/$(1)/walk_replay_data.o $(TGT)/$(1)/walk_replay_data_corrupt.o: tests/target/ins_replay.h \
                                                                        tests/target/walk_replay.h
+$(TGT)/$(1)/drive_replay_data.c: $(TGT)/gen_drive_replay_$(if $(filter 1,$(3)),double,float) \
+                                 $(TGT_DRIVE_LOG) | $(TGT)/$(1)/port
+	$$< $(TGT_DRIVE_LOG) > $$@.tmp 2> $$(@:.c=.log) || { cat $$(@:.c=.log); exit 1; }
+	mv $$@.tmp $$@
+$(TGT)/$(1)/drive_replay_data_corrupt.c: $(TGT)/gen_drive_replay_$(if $(filter 1,$(3)),double,float) \
+                                         $(TGT_DRIVE_LOG) | $(TGT)/$(1)/port
+	$$< --corrupt $(TGT_DRIVE_LOG) > $$@.tmp 2> $$(@:.c=.log) || { cat $$(@:.c=.log); exit 1; }
+	mv $$@.tmp $$@
+$(TGT)/$(1)/drive_replay_data.o $(TGT)/$(1)/drive_replay_data_corrupt.o: tests/target/ins_replay.h \
+                                                                         tests/target/drive_replay.h
 $(TGT)/$(1)/port:
 	mkdir -p $$@
 $(TGT)/$(1)/tv_test.elf: $(call TGT_TV_OBJS,$(1)) $(TGT)/$(1)/tv_data.o $(call TGT_PORT_OBJS,$(1)) \
@@ -143,6 +190,15 @@ $(TGT)/$(1)/walk_replay_corrupt.elf: $(call TGT_WALK_OBJS,$(1)) $(TGT)/$(1)/walk
                                      port/cortex-m/sections.ld
 	$(ARM_CC) $(2) $(TGT_LDFLAGS) -u _printf_float -Tport/cortex-m/$(TGT_BOARD_$(1)).ld \
 	    $$(filter %.o %.a,$$^) -lm -o $$@
+$(TGT)/$(1)/drive_replay.elf: $(call TGT_DRIVE_OBJS,$(1)) $(TGT)/$(1)/drive_replay_data.o \
+                              $(call TGT_PORT_OBJS,$(1)) $(BUILD)/lib-$(1)/libse23.a port/cortex-m/sections.ld
+	$(ARM_CC) $(2) $(TGT_LDFLAGS) -u _printf_float -Tport/cortex-m/$(TGT_BOARD_$(1)).ld \
+	    -Wl,-Map,$$(@:.elf=.map) $$(filter %.o %.a,$$^) -lm -o $$@
+$(TGT)/$(1)/drive_replay_corrupt.elf: $(call TGT_DRIVE_OBJS,$(1)) $(TGT)/$(1)/drive_replay_data_corrupt.o \
+                                      $(call TGT_PORT_OBJS,$(1)) $(BUILD)/lib-$(1)/libse23.a \
+                                      port/cortex-m/sections.ld
+	$(ARM_CC) $(2) $(TGT_LDFLAGS) -u _printf_float -Tport/cortex-m/$(TGT_BOARD_$(1)).ld \
+	    $$(filter %.o %.a,$$^) -lm -o $$@
 $(TGT)/$(1)/footprint_%.o: tools/target/footprint_main.c $(LIB_HDRS) | $(TGT)/$(1)/port
 	$(ARM_CC) $(2) $(TGT_CFLAGS) -DSE23_CFG_DOUBLE=$(3) \
 	    -DFOOTPRINT=$$(TGT_FOOTPRINT_$$*) -c $$< -o $$@
@@ -164,9 +220,9 @@ TGT_FOOTPRINT_kernels := 1
 TGT_FOOTPRINT_filter := 2
 TGT_FOOTPRINTS := none kernels filter
 
-TGT_RUN_IMAGES := port_selftest tv_test ins_replay walk_replay
+TGT_RUN_IMAGES := port_selftest tv_test ins_replay walk_replay drive_replay
 TGT_IMAGES := $(foreach v,$(TGT_VARIANTS),$(foreach i,$(TGT_RUN_IMAGES) tv_corrupt ins_replay_corrupt \
-                walk_replay_corrupt,\
+                walk_replay_corrupt drive_replay_corrupt,\
                 $(TGT)/$(v)/$(i).elf))
 
 target: $(TGT_IMAGES)
@@ -212,6 +268,16 @@ test-target-walk-corrupt: target
 	  $(QEMU_RUN) $(TGT_BOARD_$(v)) $(TGT)/$(v)/walk_replay_corrupt.elf; rc=$$?; \
 	  if [ $$rc -eq 3 ]; then echo "$(v): perturbed walk reference detected (exit 3, as required)"; \
 	  else echo "$(v): perturbed walk reference gave exit $$rc, expected 3"; fail=1; fi;) exit $$fail
+
+# The drive replay's own test: the image built from a reference with three
+# perturbed values (a position, a counter, one fix's verdict;
+# gen_drive_replay --corrupt) must report exactly those three checks failed.
+.PHONY: test-target-drive-corrupt
+test-target-drive-corrupt: target
+	@fail=0; $(foreach v,$(TGT_VARIANTS),\
+	  $(QEMU_RUN) $(TGT_BOARD_$(v)) $(TGT)/$(v)/drive_replay_corrupt.elf; rc=$$?; \
+	  if [ $$rc -eq 3 ]; then echo "$(v): perturbed drive reference detected (exit 3, as required)"; \
+	  else echo "$(v): perturbed drive reference gave exit $$rc, expected 3"; fail=1; fi;) exit $$fail
 
 # Fixtures the gates must reject (tests/target/gate_fixtures), compiled like
 # the M4F float library: $(TGT)/gate-fixtures/<name>/<name>.o (+ .su, .ci).

@@ -3,11 +3,13 @@
 # vectors of every public routine (tests/target), the navigation filter run
 # through recorded sequences against the host's double run
 # (tests/target/ins_replay.c), the real foot-mounted walk against the
-# host's run in the image's precision (tests/target/walk_replay.c), and the
-# runners' own tests (one corrupted vector must fail exactly one check;
-# three perturbed replay references, and three perturbed walk references,
-# exactly three checks each). The POSIX port runs the same self-test on the
-# host; the template port must compile.
+# host's run in the image's precision (tests/target/walk_replay.c), the
+# first 70 s of the real car drive likewise (tests/target/drive_replay.c),
+# and the runners' own tests (one corrupted vector must fail exactly one
+# check; three perturbed replay references, three perturbed walk references
+# and three perturbed drive references, exactly three checks each). The
+# POSIX port runs the same self-test on the host; the template port must
+# compile.
 check port-posix make -s test-port-posix BUILD="$BUILD"
 check port-template cc -std=c99 -Wall -Wextra -Wpedantic -Werror -Iport \
     -fsyntax-only port/template/se23_port.c
@@ -20,7 +22,7 @@ check target-vectors-cover-api /usr/bin/python3 tools/target/se23_api.py --cover
     tests/target/tv_list.h
 check target-images make -s -j1 target BUILD="$BUILD"
 for v in m4f-float:mps2-an386 m7-double:mps2-an500; do
-    for img in port_selftest tv_test ins_replay walk_replay; do
+    for img in port_selftest tv_test ins_replay walk_replay drive_replay; do
         check "target-${v%%:*}-$img" sh tools/target/qemu-run.sh "${v#*:}" \
             "$BUILD/target/${v%%:*}/$img.elf"
     done
@@ -28,6 +30,7 @@ done
 check target-corrupt-vector-fails make -s test-target-corrupt BUILD="$BUILD"
 check target-ins-replay-corrupt-fails make -s test-target-ins-corrupt BUILD="$BUILD"
 check target-walk-replay-corrupt-fails make -s test-target-walk-corrupt BUILD="$BUILD"
+check target-drive-replay-corrupt-fails make -s test-target-drive-corrupt BUILD="$BUILD"
 # Instruction counts (make bench-target): every operation returns SE23_OK and
 # two runs give identical counts.
 check target-bench-deterministic sh -c 'make -s bench-target BUILD="$1" >/dev/null &&

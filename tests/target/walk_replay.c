@@ -51,11 +51,13 @@
 #include <string.h>
 
 #include "walk_replay.h"
+#include "walk_replay_check.h"
 
 #define WALK_EXIT_MAX 200
 #define WALK_CHECK_MAX 16
 
-enum { G_R, G_V, G_P, G_BG, G_BA, G_PD, G_STAT, G_NIS, G_CLOSE, N_GROUPS };
+/* the state's groups (RPC_R .. RPC_PD), then the walk's */
+enum { G_STAT = RPC_N_STATE, G_NIS, G_CLOSE, N_GROUPS };
 
 static const char *const group_name[N_GROUPS] = {
     "R", "v [m/s]", "p [m]", "b_g [rad/s]", "b_a [m/s^2]", "diag P (rel)",
@@ -108,50 +110,7 @@ static insr_check_t got[WALK_CHECK_MAX];
 static double worst_run[N_GROUPS];  /* worst deviation per group, whole run */
 static int worst_at[N_GROUPS];      /* ... at this sample (stat) or checkpoint */
 
-/* Deviation of a from the reference b in group gr (NaN: 1e30); thr: the
- * threshold of a rel* group. */
-static double dev_thr(int gr, double a, double b, double thr)
-{
-    double d = a - b;
-    d = d < 0.0 ? -d : d;
-    if (rel[gr] != 0) {
-        double r = b < 0.0 ? -b : b;
-        r = (rel[gr] == 2 && r < thr) ? thr : r;
-        d = r != 0.0 ? d / r : (d != 0.0 ? 1e30 : 0.0);
-    }
-    return d == d ? d : 1e30;
-}
-
-static double dev(int gr, double a, double b)
-{
-    return dev_thr(gr, a, b, 0.0);
-}
-
-/* The run's worst of group gr: d at sample or checkpoint at. */
-static void note(int gr, double d, int at)
-{
-    if (d > worst_run[gr]) {
-        worst_run[gr] = d;
-        worst_at[gr] = at;
-    }
-}
-
-/* Worst deviation (as a fraction of tol) of n reals of group gr; updates
- * the run's worst and *where. */
-static double compare(int gr, const se23_real_t *a, const se23_real_t *b, int n, double worst,
-                      const char **where, int at)
-{
-    int i;
-    for (i = 0; i < n; ++i) {
-        const double d = dev(gr, (double)a[i], (double)b[i]);
-        note(gr, d, at);
-        if (d / tol[gr] > worst) {
-            worst = d / tol[gr];
-            *where = group_name[gr];
-        }
-    }
-    return worst;
-}
+static const rpc_groups_t groups = {N_GROUPS, group_name, tol, rel, worst_run, worst_at};
 
 /* ---- after every sample ------------------------------------------------- */
 
@@ -222,16 +181,17 @@ static void hook(void *ctx, const se23_ins_t *in, int k, int what, int verdict)
         }
         ++w->flags_bad;
     }
-    note(G_STAT,
-         dev_thr(G_STAT, (double)in->det.stat, (double)walk_ref.stat[k],
-                 (double)in->det.cfg.threshold),
-         k);
+    rpc_note(&groups, G_STAT,
+             rpc_dev(&groups, G_STAT, (double)in->det.stat, (double)walk_ref.stat[k],
+                     (double)in->det.cfg.threshold),
+             k);
     nis = walk_nis(in, &w->prev, &walk_ref.seq.imu[k], verdict);
     if ((nis < 0.0) != (walk_ref.nis[k] < 0)) {
         ++w->nis_bad; /* evaluated on one side only */
     } else {
         if (nis >= 0.0) {
-            note(G_NIS, dev_thr(G_NIS, nis, (double)walk_ref.nis[k], INSR_ACCEL_TEST_Q), k);
+            rpc_note(&groups, G_NIS,
+                     rpc_dev(&groups, G_NIS, nis, (double)walk_ref.nis[k], INSR_ACCEL_TEST_Q), k);
         }
         closest_call(w, in, k, nis);
     }
@@ -244,33 +204,9 @@ static void hook(void *ctx, const se23_ins_t *in, int k, int what, int verdict)
 /* The checks of one checkpoint; returns 1 if it failed. */
 static int check(int j, const insr_check_t *o, const insr_check_t *ref)
 {
-    const char *where = "-";
-    double w = 0.0;
-    int fails = 0, i;
-    if (o->t_ns != ref->t_ns || o->status != ref->status) {
-        printf("FAIL sample %d: t %lld ns, status 0x%03x; expected %lld, 0x%03x\n", ref->at,
-               (long long)o->t_ns, (unsigned)o->status, (long long)ref->t_ns,
-               (unsigned)ref->status);
-        ++fails;
-    }
-    for (i = 0; i < INSR_N_COUNTERS; ++i) {
-        if (o->c[i] != ref->c[i]) {
-            printf("FAIL sample %d: counter %s = %u, expected %u\n", ref->at, insr_counter_name[i],
-                   (unsigned)o->c[i], (unsigned)ref->c[i]);
-            ++fails;
-        }
-    }
-    w = compare(G_R, o->R, ref->R, 9, w, &where, j);
-    w = compare(G_V, o->v, ref->v, 3, w, &where, j);
-    w = compare(G_P, o->p, ref->p, 3, w, &where, j);
-    w = compare(G_BG, o->bg, ref->bg, 3, w, &where, j);
-    w = compare(G_BA, o->ba, ref->ba, 3, w, &where, j);
-    w = compare(G_PD, o->P, ref->P, 15, w, &where, j);
-    if (!(w <= 1.0)) {
-        printf("FAIL sample %d: %s beyond its tolerance (%.3g x tol)\n", ref->at, where, w);
-        ++fails;
-    }
-    w = w < 99.99 ? w : 99.99;
+    const char *where;
+    double w;
+    const int fails = rpc_check_state(&groups, j, o, ref, &w, &where);
     printf("walk t = %6.3f s  %s  p = (%7.3f, %7.3f, %7.3f) m  %4u ZUPT %4u ZARU  worst %5.1f%% "
            "of tol (%s)  %s\n",
            (double)ref->t_ns * 1e-9,
@@ -335,13 +271,15 @@ static int check_closure(const walk_ctx_t *w)
         fails = 1;
     }
     for (i = 0; i < 3; ++i) {
-        const double a = dev(G_CLOSE, (double)c->p_first[i], (double)r->p_first[i]);
-        const double b = dev(G_CLOSE, (double)c->p_last[i], (double)r->p_last[i]);
+        const double a =
+            rpc_dev(&groups, G_CLOSE, (double)c->p_first[i], (double)r->p_first[i], 0.0);
+        const double b =
+            rpc_dev(&groups, G_CLOSE, (double)c->p_last[i], (double)r->p_last[i], 0.0);
         worst = a > worst ? a : worst;
         worst = b > worst ? b : worst;
     }
     {
-        const double d = dev(G_CLOSE, c->dist, r->dist);
+        const double d = rpc_dev(&groups, G_CLOSE, c->dist, r->dist, 0.0);
         worst = d > worst ? d : worst;
     }
     worst_run[G_CLOSE] = worst;
@@ -363,22 +301,12 @@ static int check_preset(void)
 {
     static se23_ins_config_t cfg; /* static: kept off the stack */
     se23_ins_align_t al;
-    double worst = 0.0;
-    int bad, same = 1;
+    se23_status_t st;
     memset(&cfg, 0, sizeof cfg);
     memset(&al, 0, sizeof al);
-    if (se23_ins_preset_foot(walk_ref.rate_hz, walk_ref.lat, &cfg, &al) != SE23_OK) {
-        printf("FAIL se23_ins_preset_foot(%g, %g) refused\n", (double)walk_ref.rate_hz,
-               (double)walk_ref.lat);
-        return 1;
-    }
-    bad = insr_config_diff(&cfg, &al, &walk_ref.seq.cfg, &walk_ref.seq.start.a, PRESET_TOL,
-                           &worst, &same);
-    printf("preset    se23_ins_preset_foot(%g, %.9g) on the target: %s the host's (worst %.2e "
-           "relative, tol %.0e)  %s\n",
-           (double)walk_ref.rate_hz, (double)walk_ref.lat, same ? "identical to" : "close to",
-           worst, PRESET_TOL, bad != 0 ? "FAIL" : "ok");
-    return bad != 0;
+    st = se23_ins_preset_foot(walk_ref.rate_hz, walk_ref.lat, &cfg, &al);
+    return rpc_check_preset("se23_ins_preset_foot", walk_ref.rate_hz, walk_ref.lat, st, &cfg, &al,
+                            &walk_ref.seq.cfg, &walk_ref.seq.start.a, PRESET_TOL);
 }
 
 int main(void)
@@ -406,11 +334,7 @@ int main(void)
     }
     fails += check_detector(&ctx);
     fails += check_closure(&ctx);
-    printf("worst deviation over the run (tolerance):\n");
-    for (j = 0; j < N_GROUPS; ++j) {
-        printf("  %-20s %9.2e  (tol %.1e%s: %5.1f%%)\n", group_name[j], worst_run[j], tol[j],
-               rel[j] == 1 ? ", relative" : "", 100.0 * worst_run[j] / tol[j]);
-    }
+    rpc_print_worst(&groups);
     printf("%d failure(s)\n", fails);
     return fails > WALK_EXIT_MAX ? WALK_EXIT_MAX : fails;
 }

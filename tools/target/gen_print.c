@@ -1,7 +1,9 @@
 /* The reference tables of the replay generators as C; see gen_print.h. */
 #include "gen_print.h"
 
+#include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 
 void gen_reals(const char *name, const se23_real_t *x, int n)
 {
@@ -106,4 +108,60 @@ void gen_print_check(const insr_check_t *o)
     printf("\n  ");
     gen_reals("P", o->P, 15);
     printf("},\n");
+}
+
+void gen_real(se23_real_t x)
+{
+    char buf[40];
+    snprintf(buf, sizeof buf, SE23_CFG_DOUBLE ? "%.17g" : "%.9g", (double)x);
+    if ((se23_real_t)strtod(buf, NULL) != x) {
+        snprintf(buf, sizeof buf, "%.17g", (double)x);
+    }
+    fputs(buf, stdout);
+}
+
+void gen_real3(const se23_real_t *x)
+{
+    putchar('{');
+    gen_real(x[0]);
+    fputs(", ", stdout);
+    gen_real(x[1]);
+    fputs(", ", stdout);
+    gen_real(x[2]);
+    putchar('}');
+}
+
+void gen_print_imu(const insr_imu_t *imu, int n)
+{
+    printf("\n/* %d IMU samples: t_ns, seq, gyro [rad/s], specific force [m/s^2] */\n", n);
+    printf("static const insr_imu_t imu[%d] = {\n", n);
+    for (int k = 0; k < n; ++k) {
+        printf(" {%lldLL, %lld, ", (long long)imu[k].t_ns, (long long)imu[k].seq);
+        gen_real3(imu[k].w);
+        fputs(", ", stdout);
+        gen_real3(imu[k].f);
+        fputs("},\n", stdout);
+    }
+    printf("};\n");
+}
+
+int gen_checkpoints(const insr_imu_t *imu, int n_imu, const double *times_s, insr_check_t *check,
+                    int n)
+{
+    int j;
+    for (j = 0; j < n - 1; ++j) {
+        const int64_t t = llround(times_s[j] * 1e9);
+        int k = 0;
+        while (k < n_imu - 1 && imu[k].t_ns < t) {
+            ++k;
+        }
+        check[j].at = k;
+    }
+    check[n - 1].at = n_imu - 1;
+    for (j = 1; j < n; ++j) {
+        if (check[j].at <= check[j - 1].at) {
+            return -1;
+        }
+    }
+    return 0;
 }

@@ -332,7 +332,6 @@ static se23_real_t rate_hz, lat;
  * up; the checkpoints. */
 static int setup(void)
 {
-    int j;
     memset(&seq, 0, sizeof seq);
     rate_hz = RATE_HZ;
     lat = LAT_DEG * DEG; /* se23-ins: lat_deg * DEG, rounded to se23_real_t at the call */
@@ -349,20 +348,9 @@ static int setup(void)
     seq.check = check;
     seq.n_check = N_CHECK;
     memset(check, 0, sizeof check);
-    for (j = 0; j < N_CHECK - 1; ++j) {
-        const int64_t t = llround(check_times[j] * 1e9);
-        int k = 0;
-        while (k < n_imu - 1 && imu[k].t_ns < t) {
-            ++k;
-        }
-        check[j].at = k;
-    }
-    check[N_CHECK - 1].at = n_imu - 1;
-    for (j = 1; j < N_CHECK; ++j) {
-        if (check[j].at <= check[j - 1].at) {
-            fprintf(stderr, "gen_walk_replay: checkpoints out of order\n");
-            return -1;
-        }
+    if (gen_checkpoints(imu, n_imu, check_times, check, N_CHECK) != 0) {
+        fprintf(stderr, "gen_walk_replay: checkpoints out of order\n");
+        return -1;
     }
     return 0;
 }
@@ -432,29 +420,6 @@ static int run(gen_t *g)
 
 /* ---- output ------------------------------------------------------------- */
 
-/* x with the fewest digits that read back (as a double, then rounded to
- * se23_real_t, as the compiler reads the table) to x exactly. */
-static void real(se23_real_t x)
-{
-    char buf[40];
-    snprintf(buf, sizeof buf, SE23_CFG_DOUBLE ? "%.17g" : "%.9g", (double)x);
-    if ((se23_real_t)strtod(buf, NULL) != x) {
-        snprintf(buf, sizeof buf, "%.17g", (double)x);
-    }
-    fputs(buf, stdout);
-}
-
-static void real3(const se23_real_t *x)
-{
-    putchar('{');
-    real(x[0]);
-    fputs(", ", stdout);
-    real(x[1]);
-    fputs(", ", stdout);
-    real(x[2]);
-    putchar('}');
-}
-
 static void print_closure(const walk_closure_t *c)
 {
     printf("  {.first_at = %d, .last_at = %d, .t_first_ns = %lldLL, .t_last_ns = %lldLL,\n   ",
@@ -472,16 +437,8 @@ static void output(const gen_t *g, int corrupt)
            " * the filter; do not edit. */\n#include \"walk_replay.h\"\n",
            corrupt ? " --corrupt (three reference values perturbed)" : "",
            SE23_CFG_DOUBLE ? "double" : "float");
-    printf("\n/* %d IMU samples: t_ns, seq, gyro [rad/s], specific force [m/s^2] */\n", n_imu);
-    printf("static const insr_imu_t imu[%d] = {\n", n_imu);
-    for (k = 0; k < n_imu; ++k) {
-        printf(" {%lldLL, %lld, ", (long long)imu[k].t_ns, (long long)imu[k].seq);
-        real3(imu[k].w);
-        fputs(", ", stdout);
-        real3(imu[k].f);
-        fputs("},\n", stdout);
-    }
-    printf("};\n\nstatic const insr_check_t check[%d] = {\n", N_CHECK);
+    gen_print_imu(imu, n_imu);
+    printf("\nstatic const insr_check_t check[%d] = {\n", N_CHECK);
     for (j = 0; j < N_CHECK; ++j) {
         gen_print_check(&got[j]);
     }
@@ -494,23 +451,23 @@ static void output(const gen_t *g, int corrupt)
     printf("static const se23_real_t stat[%d] = {", n_imu);
     for (k = 0; k < n_imu; ++k) {
         fputs(k % 6 == 0 ? "\n " : " ", stdout);
-        real(stat[k]);
+        gen_real(stat[k]);
         putchar(',');
     }
     printf("\n};\n\n/* the mean-acceleration test's NIS after every sample (-1: not decided) */\n");
     printf("static const se23_real_t nis[%d] = {", n_imu);
     for (k = 0; k < n_imu; ++k) {
         fputs(k % 6 == 0 ? "\n " : " ", stdout);
-        real(nis[k]);
+        gen_real(nis[k]);
         putchar(',');
     }
     printf("\n};\n\nconst walk_ref_t walk_ref = {\n {\"walk\",\n");
     gen_print_config(&seq.cfg);
     gen_print_start(&seq.start);
     printf("  imu, %d, NULL, 0, check, %d},\n ", n_imu, N_CHECK);
-    real(rate_hz);
+    gen_real(rate_hz);
     fputs(", ", stdout);
-    real(lat);
+    gen_real(lat);
     printf(", stance, stat, nis,\n");
     print_closure(&g->track.c);
     printf("  %.17g, %d, \"%s\"\n};\n", g->closest[0].m, g->closest[0].k, g->closest[0].test);
