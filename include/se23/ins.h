@@ -452,9 +452,12 @@ typedef struct {
 
 /** A GNSS fix in the nav frame, stamped with the time it refers to. */
 typedef struct {
-    int64_t t_ns;
-    se23_vec3_t p_n, sigma_p;  /**< antenna position and its 1-sigma [m] */
-    se23_vec3_t v_n, sigma_v;  /**< antenna velocity and its 1-sigma [m/s] */
+    int64_t t_ns;              /**< the time it refers to [ns], the caller's clock
+                                *   (moved by gnss_time_offset) */
+    se23_vec3_t p_n;           /**< antenna position, nav frame [m] */
+    se23_vec3_t sigma_p;       /**< its 1-sigma per axis [m] */
+    se23_vec3_t v_n;           /**< antenna velocity, nav frame [m/s] */
+    se23_vec3_t sigma_v;       /**< its 1-sigma per axis [m/s] */
     int has_vel;               /**< nonzero: v_n, sigma_v are used */
 } se23_ins_gnss_t;
 
@@ -481,9 +484,12 @@ typedef struct {
  *  cancellation in float). */
 typedef struct {
     int n;                    /**< samples summed */
-    se23_vec3_t w0, f0;       /**< the first sample */
-    se23_vec3_t sw, sf;       /**< sums of w - w0, f - f0 */
-    se23_vec3_t sww, sff;     /**< sums of their squares, per axis */
+    se23_vec3_t w0;           /**< the first sample's rate [rad/s] */
+    se23_vec3_t f0;           /**< the first sample's specific force [m/s^2] */
+    se23_vec3_t sw;           /**< sum of w - w0 */
+    se23_vec3_t sf;           /**< sum of f - f0 */
+    se23_vec3_t sww;          /**< sum of (w - w0)^2, per axis */
+    se23_vec3_t sff;          /**< sum of (f - f0)^2, per axis */
 } se23_ins_align_sums_t;
 
 /** What the detector made of a sample: the updates applied after it, a
@@ -502,16 +508,16 @@ enum {
 /** A stored state for the replay of delayed fixes. */
 typedef struct {
     se23_gauss_t g;           /**< state after the sample at t_ns */
-    int64_t t_ns;
+    int64_t t_ns;             /**< that sample's time [ns] */
     se23_imu_sample_t last;   /**< that sample (the rate of the lever arm) */
     se23_real_t floor_d;      /**< the floor level then (se23_ins_t) */
-    int floor_set;
+    int floor_set;            /**< floor_set then (se23_ins_t) */
 } se23_ins_snapshot_t;
 
 /** One accepted sample as the ring keeps it. */
 typedef struct {
-    se23_imu_sample_t s;
-    int64_t t_ns;
+    se23_imu_sample_t s;      /**< the sample as accepted */
+    int64_t t_ns;             /**< its time [ns] */
     int rest;                 /**< updates applied after it (SE23_INS_REST_*) */
 } se23_ins_hist_t;
 
@@ -519,7 +525,8 @@ typedef struct {
 typedef struct {
     se23_preint_unc_t f;      /**< Deltas, covariance and bias Jacobian (left
                                *   form: se23_preint_unc_cov gives P and J) */
-    int64_t t0_ns, t1_ns;     /**< the window it spans [ns] */
+    int64_t t0_ns;            /**< the start of the window it spans [ns] */
+    int64_t t1_ns;            /**< the end of that window [ns] */
     int64_t seq0;             /**< seq of the first sample received in it
                                *   (samples lost just before that one are in
                                *   the window too, interpolated: t0_ns is

@@ -4,7 +4,7 @@
 # $(BUILD)/doc/warnings.txt, their count printed. make check (step 52-doc)
 # holds the count at or below DOC_WARNINGS_MAX, so that a new public symbol
 # comes documented while the existing ones are being (issue 36).
-DOC_WARNINGS_MAX := 101
+DOC_WARNINGS_MAX := 92
 
 .PHONY: doc
 doc: deps
