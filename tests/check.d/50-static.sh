@@ -29,7 +29,8 @@ check cppcheck-port-target $STATIC_CPPCHECK -Iport -Itests/target -DSE23_CFG_DOU
     -D__ARM_ARCH_7EM__ port/posix/se23_port.c port/cortex-m/se23_port.c \
     port/template/se23_port.c tests/target/tv_runner.c tests/target/tv_custom.c \
     tests/target/port_selftest.c tests/target/ins_replay.c tests/target/ins_replay_drive.c \
-    tests/target/walk_replay.c tests/target/walk_replay_drive.c
+    tests/target/walk_replay.c tests/target/walk_replay_drive.c tests/target/walk_replay_check.c \
+    tests/target/drive_replay.c
 # shellcheck disable=SC2086
 check cppcheck-rejects-fixture sh -c '! "$@"' sh $STATIC_CPPCHECK \
     tests/target/gate_fixtures/bad_static.c
