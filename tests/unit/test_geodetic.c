@@ -165,6 +165,17 @@ static void test_geodetic_fix_at_origin_is_exactly_zero(void **state)
 }
 
 /* A fix at distance dist [m] and azimuth az [rad] from o, height h_m. */
+/* fix in the frame at o (made into fr) by se23_geo_to_ned into p, within tol
+ * [m] of e, the long-double reference (ned_l). */
+static void to_ned_checked(const se23_geo_t *o, const se23_geo_t *fix, double tol,
+                           se23_geo_frame_t *fr, se23_vec3_t *p, long double e[3])
+{
+    frame_at(o, fr);
+    assert_int_equal(se23_geo_to_ned(fr, fix, p), SE23_OK);
+    ned_l(o, fix, e);
+    assert_ned_l(p, e, tol);
+}
+
 static se23_geo_t fix_at(const se23_geo_t *o, double dist, double az, double h_m)
 {
     const double lat = (double)rad_l(o->lat_e9);
@@ -203,18 +214,15 @@ static void test_geodetic_to_ned_matches_long_double_ecef(void **state)
             const se23_geo_t fix = fix_at(&o, dists[k], (t % 8) * 0.785398163397448 + 0.1,
                                           se23t_uniform(&rng, -500, 9000));
             se23_geo_frame_t fr;
-            frame_at(&o, &fr);
             se23_vec3_t p;
-            assert_int_equal(se23_geo_to_ned(&fr, &fix, &p), SE23_OK);
             long double e[3];
-            ned_l(&o, &fix, e);
+            to_ned_checked(&o, &fix, tols[k], &fr, &p, e);
             for (int i = 0; i < 3; i++) {
                 worst[k] = fmax(worst[k], fabs((double)((long double)p.v[i] - e[i])));
                 if (i < 2) {
                     worst_ne[k] = fmax(worst_ne[k], fabs((double)((long double)p.v[i] - e[i])));
                 }
             }
-            assert_ned_l(&p, e, tols[k]);
 
             /* Round trip: within one unit where the real p_n carries it
              * (double); in float within p_n's own rounding, in metres. */
@@ -279,6 +287,22 @@ static void test_geodetic_north_follows_meridian_arc(void **state)
     }
 }
 
+/* se23_geo_down_at at fix, in the frame at o, into dn: exactly the ellipsoid
+ * normal there (down_l). */
+static void assert_down_at_normal(const se23_geo_t *o, const se23_geo_t *fix, se23_vec3_t *dn)
+{
+    se23_geo_frame_t fr;
+    se23_vec3_t p;
+    long double e[3];
+    frame_at(o, &fr);
+    assert_int_equal(se23_geo_to_ned(&fr, fix, &p), SE23_OK);
+    assert_int_equal(se23_geo_down_at(&fr, &p, dn), SE23_OK);
+    down_l(o, fix, e);
+    for (int j = 0; j < 3; j++) {
+        assert_near(dn->v[j], (double)e[j], SE23_CFG_DOUBLE ? 1e-12 : 4e-7, 0);
+    }
+}
+
 /* East along the parallel: the down vector tilts east by offset / (N + h). */
 static void test_geodetic_down_tilts_by_offset_over_radius(void **state)
 {
@@ -290,11 +314,8 @@ static void test_geodetic_down_tilts_by_offset_over_radius(void **state)
             const se23_geo_t o = geo(lats[i], -120, 100);
             se23_geo_t fix = o;
             fix.lon_e9 += dlons[k];
-            se23_geo_frame_t fr;
-            frame_at(&o, &fr);
-            se23_vec3_t p, dn;
-            assert_int_equal(se23_geo_to_ned(&fr, &fix, &p), SE23_OK);
-            assert_int_equal(se23_geo_down_at(&fr, &p, &dn), SE23_OK);
+            se23_vec3_t dn;
+            assert_down_at_normal(&o, &fix, &dn); /* exact: the ellipsoid normal at the fix */
             const double lat = (double)rad_l(o.lat_e9);
             const double n = 6378137.0 / sqrt(1 - (double)e2_l() * sin(lat) * sin(lat));
             const double east = (n + 100) * cos(lat) * (double)rad_l(dlons[k]); /* along the parallel */
@@ -303,12 +324,6 @@ static void test_geodetic_down_tilts_by_offset_over_radius(void **state)
             assert_near(dn.v[1], -tilt, tilt * tilt + 8 * SE23T_EPS, 0);
             assert_near(sqrt(dn.v[0] * dn.v[0] + dn.v[1] * dn.v[1]), fabs(tilt),
                         tilt * tilt + 8 * SE23T_EPS, 0);
-            /* Exact: the ellipsoid normal at the fix. */
-            long double e[3];
-            down_l(&o, &fix, e);
-            for (int j = 0; j < 3; j++) {
-                assert_near(dn.v[j], (double)e[j], SE23_CFG_DOUBLE ? 1e-12 : 4e-7, 0);
-            }
         }
     }
 }
@@ -323,16 +338,8 @@ static void test_geodetic_down_at_matches_normal_everywhere(void **state)
                                  se23t_uniform(&rng, 0, 2000));
         const se23_geo_t fix = fix_at(&o, se23t_uniform(&rng, 0, 1e5),
                                       se23t_uniform(&rng, 0, 6.283185307), se23t_uniform(&rng, 0, 2000));
-        se23_geo_frame_t fr;
-        frame_at(&o, &fr);
-        se23_vec3_t p, dn;
-        assert_int_equal(se23_geo_to_ned(&fr, &fix, &p), SE23_OK);
-        assert_int_equal(se23_geo_down_at(&fr, &p, &dn), SE23_OK);
-        long double e[3];
-        down_l(&o, &fix, e);
-        for (int j = 0; j < 3; j++) {
-            assert_near(dn.v[j], (double)e[j], SE23_CFG_DOUBLE ? 1e-12 : 4e-7, 0);
-        }
+        se23_vec3_t dn;
+        assert_down_at_normal(&o, &fix, &dn);
     }
 }
 
@@ -342,12 +349,9 @@ static void test_geodetic_across_antimeridian(void **state)
     const se23_geo_t o = geo(10, 179.9995, 0);
     const se23_geo_t fix = geo(10, -179.9995, 0);
     se23_geo_frame_t fr;
-    frame_at(&o, &fr);
     se23_vec3_t p;
-    assert_int_equal(se23_geo_to_ned(&fr, &fix, &p), SE23_OK);
     long double e[3];
-    ned_l(&o, &fix, e);
-    assert_ned_l(&p, e, TOL_10KM);
+    to_ned_checked(&o, &fix, TOL_10KM, &fr, &p, e);
     assert_true(p.v[1] > 100 && p.v[1] < 120);
     se23_geo_t back;
     assert_int_equal(se23_geo_from_ned(&fr, &p, &back), SE23_OK);

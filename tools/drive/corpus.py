@@ -28,6 +28,9 @@ import os
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from summary import median  # noqa: E402  (tools/drive/summary.py, next to this script)
+
 LENGTHS = (10, 30, 60)
 
 
@@ -142,14 +145,6 @@ def score(b, imp_log, nav_log, lever, out_csv):
     outs = list(csv.DictReader(open(out_csv.replace(".csv", ".outages.csv")))) \
         if os.path.exists(out_csv.replace(".csv", ".outages.csv")) else []
     return rows, outs
-
-
-def median(xs):
-    xs = sorted(x for x in xs if not math.isnan(x))
-    if not xs:
-        return float("nan")
-    n = len(xs)
-    return xs[n // 2] if n % 2 else 0.5 * (xs[n // 2 - 1] + xs[n // 2])
 
 
 def main(argv):

@@ -129,4 +129,10 @@ int drive_meta_read(const char *path, drive_meta_t *m);
 /** Parses "START,LEN" (seconds, START >= 0, LEN > 0) into out[2]; 0 if ok. */
 int drive_parse_outage(const char *s, double out[2]);
 
+/** argv with every "--name=value" after argv[0] split into "--name" "value"
+ * (harness_parse_opts takes the separate form; a value may start with '-',
+ * e.g. --axes=-x,y,-z): a calloc'd array (free it; the strings are argv's,
+ * the '=' overwritten), *argc its length; NULL if out of memory. */
+char **drive_split_eq(int *argc, char **argv);
+
 #endif /* SE23_DRIVE_H */

@@ -131,29 +131,6 @@ static int take_outages(int *argc, char **argv, opts_t *o)
     return 0;
 }
 
-/* "--name=value" into "--name" "value" (harness_parse_opts takes the
- * separate form; a value may start with '-', e.g. --axes=-x,y,-z). */
-static char **split_eq(int *argc, char **argv)
-{
-    char **v = calloc(2 * (size_t)*argc + 1, sizeof *v);
-    int i, n = 0;
-    if (v == NULL) {
-        return NULL;
-    }
-    for (i = 0; i < *argc; i++) {
-        char *eq = strncmp(argv[i], "--", 2) == 0 ? strchr(argv[i], '=') : NULL;
-        if (i > 0 && eq != NULL) {
-            *eq = '\0';
-            v[n++] = argv[i];
-            v[n++] = eq + 1;
-        } else {
-            v[n++] = argv[i];
-        }
-    }
-    *argc = n;
-    return v;
-}
-
 static int parse_args(int argc, char **argv, opts_t *o)
 {
     const char **pos = calloc((size_t)argc + 1, sizeof *pos);
@@ -397,19 +374,21 @@ static void print_counts(const char *what, const import_count_t *c, int64_t extr
     printf("\n");
 }
 
-/* Writes one fix on ch; -1 on a write error. */
+/* Writes one fix on ch as number *n_written + 1 and counts it there, or in
+ * *n_bad_geo if se23_geo_to_ned refuses it; -1 on a write error. */
 static int put_fix(lcm_t *lc, const char *ch, const se23_geo_frame_t *frame, const drive_fix_t *x,
-                   int64_t t_ns, int64_t seq, const double floor[2])
+                   int64_t t_ns, const double floor[2], int64_t *n_written, int64_t *n_bad_geo)
 {
     se23lcm_gnss_fix m;
     se23_vec3_t p;
     int k;
     if (se23_geo_to_ned(frame, &x->geo, &p) != SE23_OK) {
-        return 1; /* the caller counts it */
+        (*n_bad_geo)++;
+        return 0;
     }
     memset(&m, 0, sizeof m);
     m.t_ns = t_ns;
-    m.seq = seq;
+    m.seq = *n_written + 1;
     for (k = 0; k < 3; k++) {
         m.p_n[k] = (double)p.v[k];
         m.v_n[k] = x->v[k];
@@ -417,7 +396,11 @@ static int put_fix(lcm_t *lc, const char *ch, const se23_geo_frame_t *frame, con
         m.sigma_v[k] = x->sv[k] > floor[1] ? x->sv[k] : floor[1];
     }
     m.has_vel = (int8_t)(x->has_vel && m.sigma_v[0] > 0 && m.sigma_v[1] > 0 && m.sigma_v[2] > 0);
-    return se23lcm_gnss_fix_publish(lc, ch, &m) == 0 ? 0 : -1;
+    if (se23lcm_gnss_fix_publish(lc, ch, &m) != 0) {
+        return -1;
+    }
+    (*n_written)++;
+    return 0;
 }
 
 static int in_outage(const opts_t *o, int64_t t_rel_ns)
@@ -550,26 +533,14 @@ static int write_out(drive_t *d)
                 n_nosig++;
                 continue;
             }
-            switch (put_fix(lc, HARNESS_CH_GNSS, &frame, x, tj - t0, n_gnss + 1, o->sigma_floor)) {
-            case 0:
-                n_gnss++;
-                break;
-            case 1:
-                n_bad_geo++;
-                break;
-            default:
+            if (put_fix(lc, HARNESS_CH_GNSS, &frame, x, tj - t0, o->sigma_floor, &n_gnss,
+                        &n_bad_geo) != 0) {
                 goto write_error;
             }
         } else {
             static const double no_floor[2] = {0.0, 0.0};
-            switch (put_fix(lc, CH_REF, &frame, &d->ref.fix[k], tk - t0, n_ref + 1, no_floor)) {
-            case 0:
-                n_ref++;
-                break;
-            case 1:
-                n_bad_geo++;
-                break;
-            default:
+            if (put_fix(lc, CH_REF, &frame, &d->ref.fix[k], tk - t0, no_floor, &n_ref,
+                        &n_bad_geo) != 0) {
                 goto write_error;
             }
             k++;
@@ -727,7 +698,7 @@ static int read_drive(drive_t *d)
 int main(int argc, char **argv)
 {
     drive_t *d = calloc(1, sizeof *d);
-    char **av = split_eq(&argc, argv);
+    char **av = drive_split_eq(&argc, argv);
     int rc;
     if (d == NULL || av == NULL) {
         return 1;

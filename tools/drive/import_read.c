@@ -136,6 +136,46 @@ static void count_bad(import_count_t *c, drive_msgs_t *msgs, const char *path,
     }
 }
 
+/* A reader on path opened by drive_open (its FILE in r->f); NULL if either
+ * fails (nothing left open). */
+static csv_reader_t *reader_open(const char *path, int *is_pipe)
+{
+    FILE *f = drive_open(path, is_pipe);
+    csv_reader_t *r = malloc(sizeof *r);
+    if (f == NULL || r == NULL) {
+        free(r);
+        if (f != NULL) {
+            drive_close(f, *is_pipe);
+        }
+        return NULL;
+    }
+    csv_reader_init(r, f);
+    return r;
+}
+
+/* Closes what reader_open opened: -1 if the close failed (a gzip that
+ * failed), which say says on stderr. */
+static int reader_close(const char *path, csv_reader_t *r, int is_pipe, int say)
+{
+    const int rc = drive_close(r->f, is_pipe);
+    free(r);
+    if (rc != 0 && say) {
+        fprintf(stderr, PROG ": %s: gzip failed (not a gzip file, or truncated)\n", path);
+    }
+    return rc;
+}
+
+/* -1 (and says so) if r met a line with no end: the file is not text. */
+static int refuse_runaway(const char *path, const csv_reader_t *r)
+{
+    if (!r->runaway) {
+        return 0;
+    }
+    fprintf(stderr, PROG ": %s: no line end within %ld bytes: not a text file, refused\n", path,
+            CSV_RUNAWAY_MAX);
+    return -1;
+}
+
 /* ---- IMU ------------------------------------------------------------- */
 
 static int imu_push(drive_imu_t *imu, const row_t *row, int64_t lineno)
@@ -164,18 +204,12 @@ static int read_imu(const char *path, const row_map_t *map, int ncols, int heade
                     drive_imu_t *imu, drive_msgs_t *msgs)
 {
     int is_pipe, rc = 0;
-    FILE *f = drive_open(path, &is_pipe);
-    csv_reader_t *r = malloc(sizeof *r);
+    csv_reader_t *r = reader_open(path, &is_pipe);
     int64_t data_lines = 0;
     int last_was_valid = 0;
-    if (f == NULL || r == NULL) {
-        free(r);
-        if (f != NULL) {
-            drive_close(f, is_pipe);
-        }
+    if (r == NULL) {
         return -1;
     }
-    csv_reader_init(r, f);
     while (csv_read_line(r)) {
         row_t row;
         row_why_t why;
@@ -212,12 +246,11 @@ static int read_imu(const char *path, const row_map_t *map, int ncols, int heade
                         "refused\n", path, (long long)r->lineno, CSV_RUNAWAY_MAX);
         rc = -1;
     }
-    if (ferror(f)) {
+    if (ferror(r->f)) {
         fprintf(stderr, PROG ": cannot read %s\n", path);
         rc = -1;
     }
-    if (drive_close(f, is_pipe) != 0) {
-        fprintf(stderr, PROG ": %s: gzip failed (not a gzip file, or truncated)\n", path);
+    if (reader_close(path, r, is_pipe, 1) != 0) {
         rc = -1;
     }
     if (rc == 0 && skip_ends && data_lines >= 2 && last_was_valid) {
@@ -227,7 +260,6 @@ static int read_imu(const char *path, const row_map_t *map, int ncols, int heade
         imu->c.rows--;
         imu->n--;
     }
-    free(r);
     return rc;
 }
 
@@ -421,20 +453,36 @@ static row_status_t st_of(csv_num_t n)
     return n == CSV_NUM_OK ? ROW_OK : n == CSV_NUM_TEXT ? ROW_TEXT : ROW_NONFINITE;
 }
 
+/* The fields of r's line into fl by split (csv_split or split_ws), counted
+ * in c: 0 for a blank line, -1 for a line that is not text (a bad row, what
+ * names it), else how many (a row). */
+static int fix_fields(const csv_reader_t *r, int (*split)(const char *, csv_field_t *, int),
+                      csv_field_t *fl, import_count_t *c, drive_msgs_t *msgs, const char *path,
+                      const char *what)
+{
+    int n;
+    if (r->too_long || r->has_nul) {
+        c->rows++;
+        count_bad(c, msgs, path, r, ROW_TEXT, what);
+        return -1;
+    }
+    n = split(r->buf, fl, FIELDS_MAX);
+    if (n == 0) {
+        c->blank++;
+    } else {
+        c->rows++;
+    }
+    return n;
+}
+
 int drive_read_pos(const char *path, drive_fixes_t *gnss, drive_fixes_t *ref,
                    drive_msgs_t *msgs)
 {
     int is_pipe, rc = 0, saw_header = 0;
-    FILE *f = drive_open(path, &is_pipe);
-    csv_reader_t *r = malloc(sizeof *r);
-    if (f == NULL || r == NULL) {
-        free(r);
-        if (f != NULL) {
-            drive_close(f, is_pipe);
-        }
+    csv_reader_t *r = reader_open(path, &is_pipe);
+    if (r == NULL) {
         return -1;
     }
-    csv_reader_init(r, f);
     while (csv_read_line(r)) {
         csv_field_t fl[FIELDS_MAX];
         drive_fix_t x;
@@ -454,17 +502,11 @@ int drive_read_pos(const char *path, drive_fixes_t *gnss, drive_fixes_t *ref,
             }
             continue;
         }
-        n = r->too_long || r->has_nul ? 0 : split_ws(r->buf, fl, FIELDS_MAX);
-        if (n == 0 && !r->too_long && !r->has_nul) {
-            gnss->c.blank++;
+        n = fix_fields(r, split_ws, fl, &gnss->c, msgs, path, "solution row");
+        if (n <= 0) {
             continue;
         }
-        gnss->c.rows++;
         memset(&x, 0, sizeof x);
-        if (r->too_long || r->has_nul) {
-            count_bad(&gnss->c, msgs, path, r, ROW_TEXT, "solution row");
-            continue;
-        }
         if (n != 15 && n != 24) {
             count_bad(&gnss->c, msgs, path, r, ROW_COLUMNS, "solution row (15 or 24 fields)");
             continue;
@@ -513,13 +555,10 @@ int drive_read_pos(const char *path, drive_fixes_t *gnss, drive_fixes_t *ref,
                         ".pos solution in degrees, refused\n", path);
         rc = -1;
     }
-    if (r->runaway) {
-        fprintf(stderr, PROG ": %s: no line end within %ld bytes: not a text file, refused\n",
-                path, CSV_RUNAWAY_MAX);
+    if (refuse_runaway(path, r) != 0) {
         rc = -1;
     }
-    drive_close(f, is_pipe);
-    free(r);
+    reader_close(path, r, is_pipe, 0);
     ref->c.rows = gnss->c.rows;
     return rc;
 }
@@ -542,21 +581,14 @@ int drive_read_ublox_fixes(const char *path, drive_fixes_t *out, drive_msgs_t *m
                                         "vn_mps",      "ve_mps",      "vd_mps",      "pos_std_n_m",
                                         "pos_std_e_m", "pos_std_d_m", "vel_std_n_mps",
                                         "vel_std_e_mps", "vel_std_d_mps"};
-    int col[13], ncols = 0, is_pipe, rc = 0, k;
-    FILE *f = drive_open(path, &is_pipe);
-    csv_reader_t *r = malloc(sizeof *r);
-    if (f == NULL || r == NULL) {
-        free(r);
-        if (f != NULL) {
-            drive_close(f, is_pipe);
-        }
+    int col[13], ncols = 0, is_pipe, rc = 0, k, n;
+    csv_reader_t *r = reader_open(path, &is_pipe);
+    if (r == NULL) {
         return -1;
     }
-    csv_reader_init(r, f);
     while (csv_read_line(r)) {
-        csv_field_t fl[FIELDS_MAX];
         drive_fix_t x;
-        int n;
+        csv_field_t fl[FIELDS_MAX];
         csv_num_t st;
         if (r->lineno == 1) {
             char hdr[CSV_LINE_MAX + 1];
@@ -575,14 +607,8 @@ int drive_read_ublox_fixes(const char *path, drive_fixes_t *out, drive_msgs_t *m
             }
             continue;
         }
-        n = r->too_long || r->has_nul ? 0 : csv_split(r->buf, fl, FIELDS_MAX);
-        if (n == 0 && !r->too_long && !r->has_nul) {
-            out->c.blank++;
-            continue;
-        }
-        out->c.rows++;
-        if (r->too_long || r->has_nul) {
-            count_bad(&out->c, msgs, path, r, ROW_TEXT, out->name);
+        n = fix_fields(r, csv_split, fl, &out->c, msgs, path, out->name);
+        if (n <= 0) {
             continue;
         }
         if (n != ncols) {
@@ -622,16 +648,12 @@ int drive_read_ublox_fixes(const char *path, drive_fixes_t *out, drive_msgs_t *m
         fprintf(stderr, PROG ": %s: empty file, refused\n", path);
         rc = -1;
     }
-    if (r->runaway) {
-        fprintf(stderr, PROG ": %s: no line end within %ld bytes: not a text file, refused\n",
-                path, CSV_RUNAWAY_MAX);
+    if (refuse_runaway(path, r) != 0) {
         rc = -1;
     }
-    if (drive_close(f, is_pipe) != 0 && rc == 0) {
-        fprintf(stderr, PROG ": %s: gzip failed (not a gzip file, or truncated)\n", path);
+    if (reader_close(path, r, is_pipe, rc == 0) != 0) {
         rc = -1;
     }
-    free(r);
     return rc;
 }
 
@@ -735,4 +757,25 @@ int drive_meta_read(const char *path, drive_meta_t *m)
         return -1;
     }
     return 0;
+}
+
+char **drive_split_eq(int *argc, char **argv)
+{
+    char **v = calloc(2 * (size_t)*argc + 1, sizeof *v);
+    int i, n = 0;
+    if (v == NULL) {
+        return NULL;
+    }
+    for (i = 0; i < *argc; i++) {
+        char *eq = strncmp(argv[i], "--", 2) == 0 ? strchr(argv[i], '=') : NULL;
+        if (i > 0 && eq != NULL) {
+            *eq = '\0';
+            v[n++] = argv[i];
+            v[n++] = eq + 1;
+        } else {
+            v[n++] = argv[i];
+        }
+    }
+    *argc = n;
+    return v;
 }

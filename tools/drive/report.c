@@ -161,29 +161,6 @@ static int parse_pct_len(opts_t *o)
     return 0;
 }
 
-/* "--name=value" into "--name" "value" (harness_parse_opts takes the
- * separate form; a value may start with '-', e.g. --axes=-x,y,-z). */
-static char **split_eq(int *argc, char **argv)
-{
-    char **v = calloc(2 * (size_t)*argc + 1, sizeof *v);
-    int i, n = 0;
-    if (v == NULL) {
-        return NULL;
-    }
-    for (i = 0; i < *argc; i++) {
-        char *eq = strncmp(argv[i], "--", 2) == 0 ? strchr(argv[i], '=') : NULL;
-        if (i > 0 && eq != NULL) {
-            *eq = '\0';
-            v[n++] = argv[i];
-            v[n++] = eq + 1;
-        } else {
-            v[n++] = argv[i];
-        }
-    }
-    *argc = n;
-    return v;
-}
-
 static int parse_args(int argc, char **argv, opts_t *o, const char **imp, const char **nav)
 {
     const double inf = HUGE_VAL;
@@ -529,7 +506,7 @@ int main(int argc, char **argv)
     double *tmp = NULL, (*ol)[2], nees_sum = 0.0;
     int n_out, k, fail = 0;
     int64_t first_ns;
-    char **av = split_eq(&argc, argv);
+    char **av = drive_split_eq(&argc, argv);
     memset(&o, 0, sizeof o);
     memset(&d, 0, sizeof d);
     if (av == NULL || parse_args(argc, av, &o, &imp, &navp) != 0) {
