@@ -149,11 +149,16 @@ def score(b, imp_log, nav_log, lever, out_csv):
 
 def main(argv):
     b, work, summary, precisions = "build/harness/bin", "build/harness/drive-corpus", None, ["double"]
+    if not argv or argv[0] in ("-h", "--help"):
+        print(__doc__)
+        return 0 if argv else 2
     while argv and argv[0].startswith("--"):
         if argv[0] == "--float":
             precisions.append("float")
             argv = argv[1:]
             continue
+        if len(argv) < 2:
+            sys.exit("corpus.py: %s needs a value" % argv[0])
         key, val = argv[0], argv[1]
         argv = argv[2:]
         if key == "--bin":
