@@ -7,6 +7,7 @@
 
 #include <stddef.h>
 
+#include "kalman_nhc.h"
 #include "kalman_parts.h"
 #include "kalman_rest.h"
 #include "linalg.h"
@@ -255,14 +256,41 @@ static se23_real_t nhc_sigma(const se23_ins_t *ins)
     return se23_sqrt((s0 * s0) + ((l * l) * se23_v3_dot(&w, &w)));
 }
 
-int se23_ins_nhc(se23_ins_t *ins)
+/*
+ * The NHC on the user's state in ins->work as one structured update
+ * (kalman_nhc.h), committed with the filter's check. Refused with nothing
+ * written (ins->work is then the user's state still) when the update would
+ * pin a variance or its sigma is outside se23_meas_nhc's range, and on any
+ * error of se23_kalman_nhc: the general path (se23_ins_nhc) then decides.
+ */
+static se23_status_t nhc_steady(se23_ins_t *ins)
 {
+    se23_nhc_meas_t y;
     se23_status_t st = user_state(ins);
     if (st == SE23_OK) {
-        st = se23_meas_nhc(&ins->work.T, &ins->C_bv, nhc_sigma(ins), &ins->meas);
+        const se23_real_t sigma = nhc_sigma(ins);
+        if ((sigma > SE23_R(0)) && (sigma <= SE23_MEAS_NHC_SIGMA_MAX)) {
+            se23_nhc_rows(&ins->work.T, &ins->C_bv, sigma, &y);
+            st = se23_kalman_nhc(&ins->work, &y, &ins->kernel.kalman, &ins->work, NULL);
+        } else {
+            st = SE23_ERR_DOMAIN;
+        }
     }
-    if (st == SE23_OK) {
-        st = update_work(ins, NULL);
+    return st;
+}
+
+int se23_ins_nhc(se23_ins_t *ins)
+{
+    se23_status_t st = nhc_steady(ins);
+    if (st != SE23_OK) {
+        /* the general path: se23_meas_nhc's checks, the Joseph step */
+        st = user_state(ins);
+        if (st == SE23_OK) {
+            st = se23_meas_nhc(&ins->work.T, &ins->C_bv, nhc_sigma(ins), &ins->meas);
+        }
+        if (st == SE23_OK) {
+            st = update_work(ins, NULL);
+        }
     }
     if (st == SE23_OK) {
         st = commit(ins);

@@ -19,6 +19,10 @@
 #include "se23/preint_unc.h"
 #include "se23/so3.h"
 
+/* internal: the filter's structured NHC update (no -Isrc in the target's
+ * flags) */
+#include "../../src/kalman_nhc.h"
+
 static struct {
     se23_earth_model_t model;
     se23_imu_sample_t s;
@@ -29,6 +33,8 @@ static struct {
     se23_meas_t y;
     se23_vec3_t p_gnss, lever;
     se23_mat3_t cov, C_bv;
+    se23_nhc_meas_t nhc;
+    se23_kalman_work_t wk;
 } c;
 
 static void set_gauss(se23_gauss_t *g, int n)
@@ -107,6 +113,14 @@ static int update_nhc15(void)
 {
     se23_status_t st = se23_meas_nhc(&c.g15.T, &c.C_bv, SE23_R(0.3), &c.y);
     return st != SE23_OK ? (int)st : (int)se23_kalman_update(&c.g15, &c.y, &c.gout, NULL);
+}
+/* The same update on the filter's path (ins_aid.c, se23_ins_nhc): the rows
+ * without se23_meas_nhc's checks and the structured 2-row update
+ * (kalman_nhc.c), the work area the filter's. */
+static int update_nhc15_structured(void)
+{
+    se23_nhc_rows(&c.g15.T, &c.C_bv, SE23_R(0.3), &c.nhc);
+    return (int)se23_kalman_nhc(&c.g15, &c.nhc, &c.wk, &c.gout, NULL);
 }
 /* Composite: one sample into a preintegrated factor (Deltas, P, J; no
  * classical Jacobians), 20 samples in. */
@@ -272,6 +286,9 @@ const bench_step_t bench_steps[] = {
     {"UPDATE GNSS position n=15 (se23_meas_pos_nav + se23_kalman_update)", setup, update_gnss15},
     {"UPDATE non-holonomic constraint n=15 (se23_meas_nhc + se23_kalman_update)", setup,
      update_nhc15},
+    {"UPDATE non-holonomic constraint n=15, structured (filter's path: se23_nhc_rows + "
+     "se23_kalman_nhc)",
+     setup, update_nhc15_structured},
     {"FILTER sample n=15, predict only, detector off (se23_ins_imu)", prepare_ins_predict,
      ins_predict},
     {"FILTER sample n=15 at rest, predict + rest tests + ZUPT + ZARU (se23_ins_imu)",
