@@ -21,6 +21,7 @@
 #include "se23/kalman.h"
 
 #include "argcheck.h"
+#include "kalman_nhc.h"
 #include "kalman_parts.h"
 #include "kalman_rest.h"
 #include "linalg.h"
@@ -164,6 +165,20 @@ se23_status_t se23_kalman_rest(const se23_gauss_t *g, const se23_rest_meas_t *y,
     se23_status_t st = rest_check(g);
     if (st == SE23_OK) {
         st = se23_kalman_rest_cov(g, y, wk, dx, &q, out->P.m);
+    }
+    if (st == SE23_OK) {
+        update_finish(g, dx, q, out, nis);
+    }
+    return st;
+}
+
+se23_status_t se23_kalman_nhc(const se23_gauss_t *g, const se23_nhc_meas_t *y,
+                              se23_kalman_work_t *wk, se23_gauss_t *out, se23_real_t *nis)
+{
+    se23_real_t dx[S], q;
+    se23_status_t st = rest_check(g);
+    if (st == SE23_OK) {
+        st = se23_kalman_nhc_cov(g, y, wk, dx, &q, out->P.m);
     }
     if (st == SE23_OK) {
         update_finish(g, dx, q, out, nis);

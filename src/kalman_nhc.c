@@ -126,20 +126,7 @@ static inline se23_real_t nhc_row(se23_real_t c0, se23_real_t c1, const nhc_fac_
     return se23_fma(u1, u1, u0 * u0);
 }
 
-/* Nonzero if |U_i|^2 = s leaves the variance P_ii - s below
- * SE23_KALMAN_PIN_RATIO r of p_ii: (1 - r) (p_ii - s) < r s, the test of
- * kalman_parts.c's pins_a_variance on the prior and U (kalman_rest.c's). */
-static int pins(se23_real_t p_ii, se23_real_t s)
-{
-    const se23_real_t r = SE23_KALMAN_PIN_RATIO;
-    return (((SE23_R(1) - r) * (p_ii - s)) < (r * s)) ? 1 : 0;
-}
-
-/* The covariance half (the costs above) for a g whose mean is within
- * range: decides everything that can fail, then stores P+ into Pout (may
- * alias g->P.m), dx (n values) and the NIS q. On error Pout and q are not
- * written (dx and wk are scratch). */
-static se23_status_t nhc_cov(const se23_gauss_t *g, const se23_nhc_meas_t *y,
+se23_status_t se23_kalman_nhc_cov(const se23_gauss_t *g, const se23_nhc_meas_t *y,
                              se23_kalman_work_t *wk, se23_real_t *dx, se23_real_t *q,
                              se23_real_t *Pout)
 {
@@ -186,7 +173,7 @@ static se23_status_t nhc_cov(const se23_gauss_t *g, const se23_nhc_meas_t *y,
     for (int i = 0; i < 6; ++i) {
         const se23_real_t s = nhc_row(U[M * i], U[(M * i) + 1], &f, &U[M * i], &dx[i]);
         usq += s;
-        if (pins(P[(S + 1) * i], s) != 0) {
+        if (se23_kalman_pins(P[(S + 1) * i], s) != 0) {
             pinned = 1;
         }
     }
@@ -194,7 +181,7 @@ static se23_status_t nhc_cov(const se23_gauss_t *g, const se23_nhc_meas_t *y,
         const se23_real_t *p = &P[S * i];
         const se23_real_t s = nhc_row(dot6(p, h0), dot6(p, h1), &f, &U[M * i], &dx[i]);
         usq += s;
-        if (pins(P[(S + 1) * i], s) != 0) {
+        if (se23_kalman_pins(P[(S + 1) * i], s) != 0) {
             pinned = 1;
         }
     }
@@ -210,30 +197,4 @@ static se23_status_t nhc_cov(const se23_gauss_t *g, const se23_nhc_meas_t *y,
     }
     *q = nis;
     return SE23_OK;
-}
-
-/* As se23_kalman_rest (kalman.c): the mean's range checked first, the
- * covariance half's work in wk, then the retraction. */
-se23_status_t se23_kalman_nhc(const se23_gauss_t *g, const se23_nhc_meas_t *y,
-                              se23_kalman_work_t *wk, se23_gauss_t *out, se23_real_t *nis)
-{
-    se23_real_t dx[S], q = SE23_R(0);
-#if SE23_CFG_DEEP_CHECKS
-    se23_status_t st = se23_gauss_check(g);
-    if ((st == SE23_OK) && (se23_kalman_mean_in_range(g) == 0)) {
-        st = SE23_ERR_NONFINITE;
-    }
-#else
-    se23_status_t st = (se23_kalman_mean_in_range(g) != 0) ? SE23_OK : SE23_ERR_NONFINITE;
-#endif
-    if (st == SE23_OK) {
-        st = nhc_cov(g, y, wk, dx, &q, out->P.m);
-    }
-    if (st == SE23_OK) {
-        se23_kalman_retract(g, dx, out);
-        if (nis != NULL) {
-            *nis = q;
-        }
-    }
-    return st;
 }

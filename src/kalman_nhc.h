@@ -60,4 +60,15 @@ void se23_nhc_rows(const se23_pose_t *T, const se23_mat3_t *C_bv, se23_real_t si
 se23_status_t se23_kalman_nhc(const se23_gauss_t *g, const se23_nhc_meas_t *y,
                               se23_kalman_work_t *wk, se23_gauss_t *out, se23_real_t *nis);
 
+/**
+ * The covariance half of se23_kalman_nhc (kalman_nhc.c; the mean half and
+ * the state's checks are kalman.c's, shared with the rest update) for a g
+ * whose mean is within range: decides everything that can fail, then
+ * stores P+ into Pout (may alias g->P.m), dx (n values) and the NIS q. On
+ * error Pout and q are not written (dx and wk are scratch).
+ */
+se23_status_t se23_kalman_nhc_cov(const se23_gauss_t *g, const se23_nhc_meas_t *y,
+                                  se23_kalman_work_t *wk, se23_real_t *dx, se23_real_t *q,
+                                  se23_real_t *Pout);
+
 #endif /* SE23_KALMAN_NHC_H */

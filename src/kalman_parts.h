@@ -91,6 +91,16 @@ se23_status_t se23_kalman_cov(const se23_gauss_t *g, const se23_meas_t *y,
  */
 int se23_kalman_fits(const se23_real_t *P, int n, se23_real_t usq, se23_real_t q);
 
+/** Nonzero if |U_i|^2 = s leaves the variance P_ii - s below
+ *  SE23_KALMAN_PIN_RATIO r of p_ii: (1 - r) (p_ii - s) < r s, the test of
+ *  the general update's pinning on the prior and U (the structured rest and
+ *  NHC updates). */
+static inline int se23_kalman_pins(se23_real_t p_ii, se23_real_t s)
+{
+    const se23_real_t r = SE23_KALMAN_PIN_RATIO;
+    return (((SE23_R(1) - r) * (p_ii - s)) < (r * s)) ? 1 : 0;
+}
+
 /** Nonzero if every entry of g's mean (v, p, biases) is within
  *  SE23_KALMAN_MEAN_MAX (NaN is not): the retraction cannot overflow. */
 int se23_kalman_mean_in_range(const se23_gauss_t *g);

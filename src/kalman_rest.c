@@ -198,15 +198,6 @@ static void down_rows(const se23_real_t *P, const se23_real_t *U, int i, int n, 
     }
 }
 
-/* Nonzero if |U_i|^2 = s leaves the variance P_ii - s below
- * SE23_KALMAN_PIN_RATIO r of p_ii: (1 - r) (p_ii - s) < r s, the test of
- * kalman_parts.c's pins_a_variance on the prior and U. */
-static int pins(se23_real_t p_ii, se23_real_t s)
-{
-    const se23_real_t r = SE23_KALMAN_PIN_RATIO;
-    return (((SE23_R(1) - r) * (p_ii - s)) < (r * s)) ? 1 : 0;
-}
-
 se23_status_t se23_kalman_rest_cov(const se23_gauss_t *g, const se23_rest_meas_t *y,
                                    se23_kalman_work_t *wk, se23_real_t *dx, se23_real_t *nis,
                                    se23_real_t *Pout)
@@ -250,7 +241,7 @@ se23_status_t se23_kalman_rest_cov(const se23_gauss_t *g, const se23_rest_meas_t
     for (int i = 0; i < n; ++i) {
         const se23_real_t s = rest_row(&P[S * i], &f, zaru, &wk->U[M * i], &dx[i]);
         usq += s;
-        if (pins(P[(S + 1) * i], s) != 0) {
+        if (se23_kalman_pins(P[(S + 1) * i], s) != 0) {
             pinned = 1;
         }
     }
