@@ -15,9 +15,10 @@ check port-template cc -std=c99 -Wall -Wextra -Wpedantic -Werror -Iport \
     -fsyntax-only port/template/se23_port.c
 # Every public function of include/se23/*.h has reference vectors (a row of
 # tests/target/tv_list.h and a generator in tools/target/gen_*.cpp).
-# The README's contract table is the one the headers' @return paragraphs give.
-check readme-contract-current /usr/bin/python3 tools/target/se23_api.py --contract-check \
-    README.md
+# The contract page's table (tools/doc/pages/contract.md) is the one the
+# headers' @return paragraphs give.
+check contract-page-current /usr/bin/python3 tools/target/se23_api.py --contract-check \
+    tools/doc/pages/contract.md
 check target-vectors-cover-api /usr/bin/python3 tools/target/se23_api.py --coverage \
     tests/target/tv_list.h
 check target-images make -s -j1 target BUILD="$BUILD"

@@ -1,4 +1,5 @@
-"""Markdown tables of the Cortex-M figures for the README (make report-target):
+"""Markdown tables of the Cortex-M figures (make report-target), the tables of
+tools/doc/pages/cortex-m-functions.md:
 per target, the library's code size and, per public function, the
 worst-case stack (tools/target/stack_gate.py) and the instructions per call
 (build/target/bench.md from make bench-target), then the composite steps.

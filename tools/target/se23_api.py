@@ -6,12 +6,12 @@ Shared by the target gates (stack budget, vector coverage).
       fail unless every public function has a row in tv_list.h or is named
       in its "tested on the target without vectors" note.
   se23_api.py --contract [include/se23]
-      print the contract table (README "Contract"): per public function,
+      print the contract table (tools/doc/pages/contract.md): per public function,
       what it returns and which inputs it rejects with which status, from
       the @return paragraph of its doc comment in the header.
-  se23_api.py --contract-check README.md [include/se23]
-      fail unless README's table (between the contract markers) is the one
-      --contract prints.
+  se23_api.py --contract-check tools/doc/pages/contract.md [include/se23]
+      fail unless the page's table (between the contract markers) is the one
+      --contract prints (make check: contract-page-current).
 """
 import glob
 import os
@@ -84,20 +84,20 @@ def contract(include_dir="include/se23"):
     return "\n".join(rows) + "\n"
 
 
-def contract_check(readme, include_dir="include/se23"):
-    with open(readme, encoding="utf-8") as f:
+def contract_check(page, include_dir="include/se23"):
+    with open(page, encoding="utf-8") as f:
         text = f.read()
     i, j = text.find(BEGIN), text.find(END)
     if i < 0 or j < i:
-        print(f"{readme}: no contract markers")
+        print(f"{page}: no contract markers")
         return 1
     have = text[i + len(BEGIN):j].strip("\n") + "\n"
     want = contract(include_dir)
     if have != want:
-        print(f"{readme}: the contract table is out of date; regenerate it with "
+        print(f"{page}: the contract table is out of date; regenerate it with "
               "python3 tools/target/se23_api.py --contract")
         return 1
-    print(f"{readme}: contract table current ({want.count(chr(10)) - 2} functions)")
+    print(f"{page}: contract table current ({want.count(chr(10)) - 2} functions)")
     return 0
 
 
