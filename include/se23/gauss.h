@@ -131,18 +131,31 @@ typedef struct {
  *   y_rho = R^T (x_rho + dt x_nu - p^ x_phi),
  * U = (R, v, p) the increment Upsilon_k. The error propagation of a
  * noise-free step is exactly xi+ = F_k xi (paper Prop. bananaprop). No checks.
+ * @param U  the increment Upsilon_k = (R, v, p) of the sample
+ *           (se23_imu_increment)
  * @param dt sample interval [s]
+ * @param x  an error xi = (phi, nu, rho) before the sample
+ * @param y  out: F_k x, the error after it (may alias x)
  */
 void se23_gauss_fk_apply(const se23_pose_t *U, se23_real_t dt,
                          const se23_tangent_t *x, se23_tangent_t *y);
 
-/** F = F_k as a dense 9x9 matrix (for inspection and tests). No checks. */
+/**
+ * F = F_k as a dense 9x9 matrix (for inspection and tests). No checks.
+ * @param U  the increment Upsilon_k = (R, v, p) of the sample
+ * @param dt sample interval [s]
+ * @param F  out: F_k, row-major (column j is se23_gauss_fk_apply of e_j)
+ */
 void se23_gauss_fk(const se23_pose_t *U, se23_real_t dt, se23_mat9_t *F);
 
 /**
  * Y = F_k X for a 9x6 X, column by column with se23_gauss_fk_apply. Serves
  * the cross-covariance of the bias states and the preintegrated bias
  * Jacobian recursion J+ = F_k J + B_k (DESIGN.md section 3). No checks.
+ * @param U  the increment Upsilon_k = (R, v, p) of the sample
+ * @param dt sample interval [s]
+ * @param X  a 9x6 matrix, rows (phi, nu, rho)
+ * @param Y  out: F_k X (may alias X)
  */
 void se23_gauss_fk_mul(const se23_pose_t *U, se23_real_t dt,
                        const se23_mat9x6_t *X, se23_mat9x6_t *Y);
@@ -161,9 +174,12 @@ void se23_gauss_fk_mul(const se23_pose_t *U, se23_real_t dt,
  *   D_S = -a1 f^ + a2 ((th.f) I + th f^T - 2 f th^T)
  *         + (a1'/t th^ f + a2'/t th^ th^ f) th^T,   t = |th|.
  * SE23_INPUT_JAC_BASIC is the paper's dt I_{9,6} (first order in dt).
+ * @param kind which B_k: SE23_INPUT_JAC_EXACT or SE23_INPUT_JAC_BASIC
  * @param w_b corrected angular rate, body frame [rad/s]
  * @param f_b corrected specific force, body frame [m/s^2]
  * @param dt  sample interval [s], 0 < dt <= SE23_CFG_DT_MAX
+ * @param B   out: B_k, rows (phi, nu, rho), columns (db_g, db_a)
+ *            (written only on SE23_OK)
  * @return SE23_ERR_NONFINITE (NaN/Inf in, or B would overflow), SE23_ERR_DT,
  *         or SE23_ERR_DOMAIN for an unknown kind.
  */
@@ -175,10 +191,16 @@ se23_status_t se23_gauss_input_jac(se23_input_jac_kind_t kind,
 /**
  * Q = Sigma_eta = B N B^T with N = diag(sg^2/dt I3, sa^2/dt I3) (file
  * comment: sample-averaged white noise), exactly symmetric. Only the white
- * noise densities of the noise model are used.
+ * noise densities of the noise model enter Q; the bias walks are checked
+ * all the same.
+ * @param B     the input matrix B_k of the sample (se23_gauss_input_jac)
+ * @param noise the IMU noise model
+ * @param dt    sample interval [s], 0 < dt <= SE23_CFG_DT_MAX
+ * @param Q     out: Sigma_eta, the 9x9 covariance the sample's white noise
+ *              adds to the error (written only on SE23_OK)
  * @return SE23_ERR_NONFINITE (NaN/Inf in B or noise, or a Q that would
  *         overflow), SE23_ERR_DT (dt <= 0 or > SE23_CFG_DT_MAX), or
- *         SE23_ERR_DOMAIN if a density is negative.
+ *         SE23_ERR_DOMAIN if a density or a walk is negative.
  */
 se23_status_t se23_gauss_input_noise(const se23_mat9x6_t *B,
                                      const se23_imu_noise_t *noise,
@@ -190,6 +212,12 @@ se23_status_t se23_gauss_input_noise(const se23_mat9x6_t *B,
  * shears, no dense 9x9 product) and made exactly symmetric by mirroring the
  * upper triangle.
  * S and Q are caller input and fully checked; S_next may alias S or Q.
+ * @param S      the 9x9 covariance of xi before the sample
+ * @param U      the increment Upsilon_k of the sample (R in SO(3))
+ * @param dt     sample interval [s], 0 < dt <= SE23_CFG_DT_MAX
+ * @param Q      the 9x9 noise covariance added (se23_gauss_input_noise)
+ * @param S_next out: the covariance after the sample (written only on
+ *               SE23_OK)
  * @return SE23_ERR_NONFINITE, SE23_ERR_NOT_SYMMETRIC or SE23_ERR_NOT_PSD
  *         (S or Q, file comment), SE23_ERR_NOT_ROTATION (U),
  *         SE23_ERR_DT (dt <= 0 or > SE23_CFG_DT_MAX), SE23_ERR_NONFINITE
@@ -204,7 +232,8 @@ se23_status_t se23_gauss_cov_propagate(const se23_mat9_t *S,
 /**
  * Checks a filter state: n is 9 or 15, T finite with R in SO(3), biases
  * finite, P a valid covariance (file comment).
- * @return SE23_OK, SE23_ERR_DIM, SE23_ERR_NONFINITE, SE23_ERR_NOT_ROTATION,
+ * @param g the state to check
+ * @return SE23_OK, SE23_ERR_NULL, SE23_ERR_DIM, SE23_ERR_NONFINITE, SE23_ERR_NOT_ROTATION,
  *         SE23_ERR_NOT_SYMMETRIC or SE23_ERR_NOT_PSD.
  */
 se23_status_t se23_gauss_check(const se23_gauss_t *g);
@@ -216,10 +245,12 @@ se23_status_t se23_gauss_check(const se23_gauss_t *g);
  * computed with se23_gauss_fk_apply (no dense products), exactly symmetric.
  * U and B must be the increment and input matrix at the corrected inputs of
  * the sample (se23_gauss_predict does all of this).
+ * @param g     the state before the sample (trusted but for g->n, types.h)
  * @param U     increment Upsilon_k (se23_imu_increment)
  * @param B     input matrix B_k (se23_gauss_input_jac)
  * @param noise IMU noise model (walks used only for n = 15)
  * @param dt    sample interval [s]
+ * @param out   out: g with P+ (may alias g; written only on SE23_OK)
  * @return SE23_ERR_DIM (n), SE23_ERR_NOT_ROTATION (U), SE23_ERR_NONFINITE
  *         (B, noise), SE23_ERR_DOMAIN (negative noise parameter, or B's
  *         rotation rows depend on the accelerometer, which no B_k does),
@@ -240,6 +271,14 @@ se23_status_t se23_gauss_propagate(const se23_gauss_t *g, const se23_pose_t *U,
  * estimates (random-walk model).
  * The state g is trusted (types.h, "Validation policy"): only g->n is
  * checked, unless SE23_CFG_DEEP_CHECKS.
+ * @param model the Earth model (gravity, Earth rate, nominal dt; earth.h)
+ * @param g     the state at the sample's start, in the model's coordinates
+ * @param s     the raw sample: readings w_ib_b [rad/s], f_b [m/s^2], dt [s]
+ * @param noise the IMU noise model (walks used only for n = 15)
+ * @param kind  the input matrix B_k: SE23_INPUT_JAC_EXACT or
+ *              SE23_INPUT_JAC_BASIC
+ * @param out   out: the state at the sample's end (may alias g; written
+ *              only on SE23_OK)
  * @return SE23_ERR_DIM (n), SE23_ERR_DOMAIN (kind, a negative density),
  *         the sample statuses of se23_imu_step (SE23_ERR_NONFINITE,
  *         SE23_ERR_DT), SE23_ERR_NONFINITE also when the mean or P+ would
@@ -259,6 +298,13 @@ se23_status_t se23_gauss_predict(const se23_earth_model_t *model,
  * work area w (work.h) instead of on the stack: the same statuses and the
  * same results, bit for bit. w is scratch (unspecified after the call) and
  * must not overlap another argument.
+ * @param model the Earth model (earth.h)
+ * @param g     the state at the sample's start, in the model's coordinates
+ * @param s     the raw sample
+ * @param noise the IMU noise model
+ * @param kind  the input matrix B_k
+ * @param w     the work area (scratch, caller-owned)
+ * @param out   out: the state at the sample's end (may alias g)
  * @return the statuses of se23_gauss_predict; SE23_ERR_NULL also for a
  *         NULL w. On error out is not written.
  */
@@ -278,6 +324,10 @@ se23_status_t se23_gauss_predict_work(const se23_earth_model_t *model,
  * (identity on the bias block), P = M P' M^T, exactly symmetric.
  * The state g is trusted (types.h, "Validation policy"): only g->n is
  * checked, unless SE23_CFG_DEEP_CHECKS.
+ * @param model the Earth model: its Earth rate Omega = w_ie_n
+ * @param g     the carried state and its covariance
+ * @param out   out: the user's state and its covariance (may alias g;
+ *              written only on SE23_OK)
  * @return SE23_ERR_DIM (n), SE23_ERR_NONFINITE (Omega, or a mean or P
  *         that would overflow: Omega x p or M P M^T beyond the largest
  *         real); with SE23_CFG_DEEP_CHECKS the statuses of
@@ -290,6 +340,10 @@ se23_status_t se23_gauss_from_carried(const se23_earth_model_t *model,
 /**
  * out = the carried distribution of a user's one, the inverse of
  * se23_gauss_from_carried: v' = v + Omega x p, M^-1 = M with +(Rbar^T Omega)^.
+ * @param model the Earth model: its Earth rate Omega = w_ie_n
+ * @param g     the user's state and its covariance
+ * @param out   out: the carried state and its covariance (may alias g;
+ *              written only on SE23_OK)
  * @return as se23_gauss_from_carried.
  */
 se23_status_t se23_gauss_to_carried(const se23_earth_model_t *model,

@@ -65,6 +65,9 @@ typedef struct {
  * (dR/dt = R w^, dV/dt = R f, dX/dt = V from (I, 0, 0)). J = J_l, H as in so3.h.
  * Public and check-free beyond the sample, so that covariance propagation
  * (F_k = Ad_{Upsilon^-1} F) and bias Jacobians can reuse it.
+ * @param s   the sample: w_ib_b [rad/s] and f_b [m/s^2] held over dt [s]
+ * @param ups out: Upsilon = (R, v [m/s], p [m]) in the body frame at the
+ *            sample's start (written only on SE23_OK)
  * @return SE23_ERR_NONFINITE if the sample holds NaN/Inf or the increment
  *         overflows, SE23_ERR_DT unless
  *         0 < dt <= SE23_CFG_DT_MAX.
@@ -81,6 +84,8 @@ se23_status_t se23_imu_increment(const se23_imu_sample_t *s, se23_pose_t *ups);
  * O(|w| |f| dt^2) in velocity, so over a fixed time the error shrinks like dt.
  * Provided to measure what the exact increment gains and to run Forster et
  * al.'s pipeline as they define it (README).
+ * @param s   the sample, as for se23_imu_increment
+ * @param ups out: Forster et al.'s increment (written only on SE23_OK)
  * @return as se23_imu_increment.
  */
 se23_status_t se23_imu_increment_forster(const se23_imu_sample_t *s,
@@ -94,6 +99,8 @@ se23_status_t se23_imu_increment_forster(const se23_imu_sample_t *s,
  * dt^2 f / 2, so over a fixed time its position error also shrinks like dt,
  * with a larger constant (the whole f dt^2 / 2 of every sample is lost).
  * Provided to run the paper's comparisons with its own increment (README).
+ * @param s   the sample, as for se23_imu_increment
+ * @param ups out: the paper's increment (written only on SE23_OK)
  * @return as se23_imu_increment.
  */
 se23_status_t se23_imu_increment_paper(const se23_imu_sample_t *s, se23_pose_t *ups);
@@ -106,6 +113,11 @@ se23_status_t se23_imu_increment_paper(const se23_imu_sample_t *s, se23_pose_t *
  * Gamma'(Delta t), one factor). out.R is re-orthonormalised (one
  * Newton-Schulz step once |R^T R - I| passes 4 eps), so that rounding drift
  * never accumulates. No checks: NaN in gives NaN out.
+ * @param gamma Gamma, applied on the left; NULL for the identity
+ * @param T     the pose at the interval's start
+ * @param ups   the increment Upsilon over the interval, on the right
+ * @param t     the interval's length [s] (Phi_t)
+ * @param out   out: Gamma Phi_t(T) Upsilon (may alias any input)
  */
 void se23_imu_transition(const se23_pose_t *gamma, const se23_pose_t *T,
                          const se23_pose_t *ups, se23_real_t t,
@@ -120,21 +132,38 @@ void se23_imu_transition(const se23_pose_t *gamma, const se23_pose_t *T,
  * se23_earth_gamma, not accuracy).
  * R_next is kept orthonormal to rounding (se23_imu_transition), so a long
  * run never drifts out of the SO(3) check.
- * @return SE23_ERR_NONFINITE (NaN/Inf in s or T), SE23_ERR_DT unless
+ * @param model  the Earth model (gravity, Earth rate, dt, dt_max, Gamma';
+ *               earth.h)
+ * @param T      the carried state at the sample's start
+ * @param s      the sample, used as it is (no bias correction here)
+ * @param T_next out: the carried state at its end (may alias T)
+ * @return SE23_ERR_NONFINITE (NaN/Inf in s or T, or a T_next that would
+ *         overflow), SE23_ERR_DT unless
  *         0 < s->dt <= model->dt_max, SE23_ERR_NOT_ROTATION (T.R not in
- *         SO(3) within SE23_CFG_ROT_TOL); T_next is untouched on error.
+ *         SO(3) within SE23_CFG_ROT_TOL), the statuses of se23_earth_gamma
+ *         when Gamma' is recomputed; T_next is untouched on error.
  */
 se23_status_t se23_imu_step(const se23_earth_model_t *model,
                             const se23_pose_t *T, const se23_imu_sample_t *s,
                             se23_pose_t *T_next);
 
-/** Tc = (R, v + Omega x p, p): the carried state of the user's T = (R, v, p)
- *  (paper eq. eq:trick), Omega = model->w_ie_n. No checks. */
+/**
+ * Tc = (R, v + Omega x p, p): the carried state of the user's T = (R, v, p)
+ * (paper eq. eq:trick), Omega = model->w_ie_n. No checks.
+ * @param model the Earth model: its Earth rate Omega = w_ie_n [rad/s]
+ * @param T     the user's state, v relative to the Earth-fixed nav frame
+ * @param Tc    out: the carried state (may alias T)
+ */
 void se23_imu_carried_from_user(const se23_earth_model_t *model,
                                 const se23_pose_t *T, se23_pose_t *Tc);
 
-/** T = (R, v' - Omega x p, p): the user's state of a carried Tc = (R, v', p).
- *  No checks. */
+/**
+ * T = (R, v' - Omega x p, p): the user's state of a carried Tc = (R, v', p).
+ * No checks.
+ * @param model the Earth model: its Earth rate Omega = w_ie_n [rad/s]
+ * @param Tc    the carried state
+ * @param T     out: the user's state (may alias Tc)
+ */
 void se23_imu_user_from_carried(const se23_earth_model_t *model,
                                 const se23_pose_t *Tc, se23_pose_t *T);
 

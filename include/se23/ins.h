@@ -543,14 +543,28 @@ typedef struct {
                                    *   c.zupt_used, about 3 if zupt_sigma_v is the
                                    *   innovations' size */
     /* from cfg */
-    int64_t half_ns, max_gap_ns, horizon_ns; /**< half a sample, max_gap, delay_horizon */
+    /** @var se23_ins_t::half_ns
+     *  Half of dt_nominal [ns]: a fix stamped within it of the state is
+     *  applied now ("GNSS"). */
+    /** @var se23_ins_t::max_gap_ns
+     *  max_gap [ns]: the longest interval one sample bridges. */
+    int64_t half_ns, max_gap_ns, horizon_ns; /**< delay_horizon [ns] (0: no replay) */
     int64_t zaru_after_ns;        /**< zaru_after */
     int64_t max_missing;          /**< most samples max_gap can hold */
     /* time and sequence */
-    int64_t t_ns, seq;            /**< time and seq of the last accepted sample */
+    /** @var se23_ins_t::t_ns
+     *  Time of the state [ns]: of the last accepted sample, or of the init
+     *  or alignment if none has been accepted since. */
+    int64_t t_ns, seq;            /**< seq of the last accepted sample */
     int64_t max_seq;              /**< highest seq received since init */
-    int64_t streak_t_ns, streak_seq; /**< outage detection */
-    int64_t back_t_ns, back_seq;  /**< clock-step detection */
+    /** @var se23_ins_t::streak_t_ns
+     *  Time [ns] of the last over-gap sample of the streak that may confirm
+     *  an outage ("Outage"). */
+    int64_t streak_t_ns, streak_seq; /**< its seq */
+    /** @var se23_ins_t::back_t_ns
+     *  Time [ns] of the last bad-time sample of the streak that may confirm
+     *  a clock step back ("Clock"). */
+    int64_t back_t_ns, back_seq;  /**< its seq */
     int64_t last_fix_ns;          /**< time of the last fused fix (-1: none) */
     int64_t rest_ns;              /**< time the detector has seen rest (0: moving) */
     int64_t move_ns;              /**< time it has seen motion since (0: at rest;
@@ -562,35 +576,57 @@ typedef struct {
     int grav_set;                 /**< nonzero once grav_cube is set */
     /* structures holding int64 */
     se23_ins_gnss_t pending;      /**< a fix ahead of the state */
-    se23_ins_factor_t fac, fac_out; /**< preintegration */
+    /** @var se23_ins_t::fac
+     *  The preintegrated factor being accumulated (preint_window > 0). */
+    se23_ins_factor_t fac, fac_out; /**< the last finished factor, until
+                                     *   se23_ins_take_factor takes it */
     se23_ins_snapshot_t snap[2];  /**< delayed fixes: the snapshots */
     se23_ins_hist_t ring[SE23_INS_RING]; /**< and the samples since the older */
     /* 4-byte fields */
     uint32_t status;              /**< SE23_INS_ST_* bits */
-    int have_last;
-    int streak, back_streak;
-    int have_pending;
+    int have_last;                /**< nonzero once a sample has been accepted
+                                   *   since the init or alignment: last holds a
+                                   *   reading */
+    /** @var se23_ins_t::streak
+     *  Consecutive consistent over-gap samples so far (up to
+     *  SE23_INS_OUTAGE_CONFIRM: "Outage"). */
+    int streak, back_streak;      /**< consecutive consistent bad-time samples
+                                   *   so far (up to SE23_INS_OUTAGE_CONFIRM:
+                                   *   "Clock") */
+    int have_pending;             /**< nonzero while pending holds a fix */
     int gated_run;                /**< consecutive gated fixes */
     se23_real_t nis_last;         /**< NIS of the last fused fix */
     se23_real_t floor_d;          /**< down position of the floor level [m] ("Floor") */
     int floor_set;                /**< nonzero once a stance has set floor_d */
-    int ring_head, ring_count;    /**< oldest entry, number of entries */
+    /** @var se23_ins_t::ring_head
+     *  Index in ring of the oldest entry. */
+    int ring_head, ring_count;    /**< number of entries in ring */
     int replaying;                /**< nonzero inside a replay (counters not repeated) */
     int n_snap;                   /**< snapshots held */
     int snap_old;                 /**< index of the older one */
-    int fac_ready;
+    int fac_ready;                /**< nonzero while fac_out is not taken */
     /* structures of se23_real_t */
     se23_imu_sample_t last;       /**< last accepted sample (raw), for holds */
-    se23_ins_align_t align;
-    se23_ins_align_sums_t sums;
-    se23_earth_model_t model;
-    se23_ins_counters_t c;
-    se23_ins_config_t cfg;
+    se23_ins_align_t align;       /**< the alignment request (se23_ins_align) */
+    se23_ins_align_sums_t sums;   /**< the alignment's running sums */
+    se23_earth_model_t model;     /**< the Earth model: the origin's gravity, or
+                                   *   that of the cube the position is in
+                                   *   (gravity_step > 0, "Frame"); Earth rate
+                                   *   (zero on flat Earth); dt = dt_nominal;
+                                   *   dt_max = SE23_CFG_DT_MAX */
+    se23_ins_counters_t c;        /**< the counters */
+    se23_ins_config_t cfg;        /**< the configuration (se23_ins_setup) */
     se23_mat3_t C_bv;             /**< the mounting, exp(mount_bv^) */
-    se23_real_t grav_rm, grav_rn; /**< meridian, prime-vertical radius + height at the origin */
+    /** @var se23_ins_t::grav_rm
+     *  Meridian radius of curvature plus height at the origin [m]: a north
+     *  position divided by it is the angle [rad] by which the vertical there
+     *  tilts from the origin's ("Frame"). */
+    se23_real_t grav_rm, grav_rn; /**< prime-vertical radius of curvature plus
+                                   *   height at the origin [m]: the same for an
+                                   *   east position */
     se23_imu_noise_t noise;       /**< the white noise propagated: cfg.noise, or
                                    *   raised by a measuring alignment */
-    se23_stationary_t det;
+    se23_stationary_t det;        /**< the stationary detector (zupt set) */
     se23_meas_t meas;             /**< scratch of the updates */
     se23_gauss_t g;               /**< state in the model's coordinates */
     se23_gauss_t work;            /**< scratch of the updates (user's coordinates) */

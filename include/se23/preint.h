@@ -59,12 +59,18 @@ typedef struct {
     uint32_t n;        /**< number of samples accumulated */
 } se23_preint_t;
 
-/** f = the empty factor: Deltas (I, 0, 0), Delta t = 0, no samples. */
+/**
+ * f = the empty factor: Deltas (I, 0, 0), Delta t = 0, no samples.
+ * @param f out: the factor to (re)start
+ */
 void se23_preint_reset(se23_preint_t *f);
 
 /**
  * Adds one sample: f.delta <- Phi_dt(f.delta) Upsilon(s), f.dt += s.dt,
  * f.n += 1 (exact for a zero-order-hold sample).
+ * @param f the factor, changed in place (only on SE23_OK)
+ * @param s the sample: w_ib_b [rad/s], f_b [m/s^2] (already corrected by
+ *          any bias estimate the caller applies), dt [s]
  * @return SE23_ERR_NONFINITE (NaN/Inf in s or f, or Deltas that would
  *         overflow), SE23_ERR_DT unless
  *         0 < s.dt <= SE23_CFG_DT_MAX (or f.dt < 0), SE23_ERR_NOT_ROTATION
@@ -77,6 +83,9 @@ se23_status_t se23_preint_add(se23_preint_t *f, const se23_imu_sample_t *s);
  * Adds one increment ups of duration dt [s] computed by the caller
  * (se23_imu_increment): f.delta <- Phi_dt(f.delta) ups, f.dt += dt, f.n += 1.
  * No checks.
+ * @param f   the factor, changed in place
+ * @param ups the sample's increment Upsilon_k
+ * @param dt  the sample's duration [s]
  */
 void se23_preint_add_increment(se23_preint_t *f, const se23_pose_t *ups,
                                se23_real_t dt);
@@ -86,6 +95,10 @@ void se23_preint_add_increment(se23_preint_t *f, const se23_pose_t *ups,
  * state T_i at t_i through the factor f, with the model's g and Omega
  * (Proposition "Preintegration with Coriolis effect"; flat Earth, paper
  * eq. discrete, when model->w_ie_n = 0). model->dt is not used.
+ * @param model the Earth model: gravity g_n and Earth rate w_ie_n (earth.h)
+ * @param f     the factor from t_i to t_j
+ * @param T_i   the user's state (R, v, p) at t_i
+ * @param T_j   out: the user's state at t_j (may alias T_i)
  * @return SE23_ERR_NONFINITE (NaN/Inf in T_i, f or the model, or a T_j
  *         that would overflow),
  *         SE23_ERR_NOT_ROTATION (T_i.R or f.delta.R), SE23_ERR_DT (f.dt < 0);
@@ -98,6 +111,10 @@ se23_status_t se23_preint_predict(const se23_earth_model_t *model,
 /**
  * Tc_j = Gamma'(f.dt) Phi_{f.dt}(Tc_i) f.delta: the same prediction on carried
  * states Tc = (R, v + Omega x p, p), as se23_imu_step propagates them.
+ * @param model the Earth model: gravity g_n and Earth rate w_ie_n (earth.h)
+ * @param f     the factor from t_i to t_j
+ * @param Tc_i  the carried state at t_i
+ * @param Tc_j  out: the carried state at t_j (may alias Tc_i)
  * @return as se23_preint_predict.
  */
 se23_status_t se23_preint_predict_carried(const se23_earth_model_t *model,

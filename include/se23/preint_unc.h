@@ -126,6 +126,7 @@ typedef struct {
  * @param b_g  gyro bias estimate [rad/s]
  * @param b_a  accel bias estimate [m/s^2]
  * @param kind input matrix for J and the noise (gauss.h)
+ * @param fu   out: the empty factor (written only on SE23_OK)
  * @return SE23_ERR_NONFINITE (bias), SE23_ERR_DOMAIN (unknown kind).
  */
 se23_status_t se23_preint_unc_reset(const se23_vec3_t *b_g,
@@ -138,6 +139,10 @@ se23_status_t se23_preint_unc_reset(const se23_vec3_t *b_g,
  * classical Jacobians of Forster et al. (file comment), for comparison:
  * about 300 more multiply-adds per sample. Only such a factor can be
  * corrected with se23_preint_unc_correct_classic.
+ * @param b_g  gyro bias estimate [rad/s]
+ * @param b_a  accel bias estimate [m/s^2]
+ * @param kind input matrix for J and the noise (gauss.h)
+ * @param fu   out: the empty factor, classic set (written only on SE23_OK)
  * @return as se23_preint_unc_reset.
  */
 se23_status_t se23_preint_unc_reset_classic(const se23_vec3_t *b_g,
@@ -156,6 +161,9 @@ se23_status_t se23_preint_unc_reset_classic(const se23_vec3_t *b_g,
  * se23_preint_unc_reset_classic (file comment). The sample and the noise
  * are checked; the factor is trusted (it comes from reset and add), and
  * re-checked with se23_preint_unc_check only if SE23_CFG_DEEP_CHECKS.
+ * @param fu    the factor, changed in place (only on SE23_OK)
+ * @param s     the raw sample: readings w_ib_b [rad/s], f_b [m/s^2]
+ *              before bias correction, dt [s]
  * @param noise white-noise densities of the IMU (gauss.h)
  * @return SE23_ERR_NONFINITE (s, noise, or an increment, P+, J+, the
  *         classical Jacobians or the Deltas that would overflow: a huge
@@ -174,6 +182,10 @@ se23_status_t se23_preint_unc_add(se23_preint_unc_t *fu,
  * work area w (work.h) instead of on the stack: the same statuses and the
  * same results, bit for bit. w is scratch (unspecified after the call) and
  * must not overlap another argument.
+ * @param fu    the factor, changed in place (only on SE23_OK)
+ * @param s     the raw sample, as for se23_preint_unc_add
+ * @param noise white-noise densities of the IMU (gauss.h)
+ * @param w     the work area (scratch, caller-owned)
  * @return the statuses of se23_preint_unc_add; SE23_ERR_NULL also for a
  *         NULL w. fu is unchanged on error.
  */
@@ -187,7 +199,8 @@ se23_status_t se23_preint_unc_add_work(se23_preint_unc_t *fu,
  * classic 0 or 1, biases, J and the classical Jacobians
  * finite, Deltas an extended pose (finite, Delta R in SO(3)), Delta t finite
  * and >= 0, P_left a valid covariance (gauss.h, "Validation").
- * @return SE23_OK, SE23_ERR_DOMAIN, SE23_ERR_NONFINITE,
+ * @param fu the factor to check
+ * @return SE23_OK, SE23_ERR_NULL, SE23_ERR_DOMAIN, SE23_ERR_NONFINITE,
  *         SE23_ERR_NOT_ROTATION, SE23_ERR_DT, SE23_ERR_NOT_SYMMETRIC or
  *         SE23_ERR_NOT_PSD.
  */
@@ -198,9 +211,10 @@ se23_status_t se23_preint_unc_check(const se23_preint_unc_t *fu);
  * P = Ad_{Delta^-1} P_left Ad_{Delta^-1}^T, J = Ad_{Delta^-1} J_left, by
  * the covariance kernels of gauss.h (F_k with U = Delta, dt = 0). The
  * factor is checked (se23_preint_unc_check) first.
- * @param P the covariance of xi, Delta_true = Delta exp(xi) (exactly
+ * @param fu the factor
+ * @param P out: the covariance of xi, Delta_true = Delta exp(xi) (exactly
  *          symmetric)
- * @param J the bias Jacobian: d = J db [s]; NULL if not wanted
+ * @param J out: the bias Jacobian: d = J db [s]; NULL if not wanted
  * @return the statuses of se23_preint_unc_check, SE23_ERR_NONFINITE (P or J
  *         would overflow: Deltas near the largest real); P and J are written
  *         only on SE23_OK.
@@ -215,8 +229,10 @@ se23_status_t se23_preint_unc_cov(const se23_preint_unc_t *fu, se23_mat9_t *P,
  *   out.delta = fu.f.delta exp(J (bhat - bbar))
  *             = exp(J_left (bhat - bbar)) fu.f.delta,
  * out.dt and out.n copied. Error O(|bhat - bbar|^2).
+ * @param fu  the factor, integrated at bbar
  * @param b_g new gyro bias estimate [rad/s]
  * @param b_a new accel bias estimate [m/s^2]
+ * @param out out: the corrected factor (written only on SE23_OK)
  * @return the statuses of se23_preint_unc_check, SE23_ERR_NONFINITE (bias,
  *         or corrected Deltas that would overflow).
  */
@@ -230,6 +246,10 @@ se23_status_t se23_preint_unc_correct(const se23_preint_unc_t *fu,
  * (file comment) to the new bias estimate (b_g, b_a):
  * Delta R exp(dR/dbg db_g), Delta V + dV/dbg db_g + dV/dba db_a,
  * Delta X + dX/dbg db_g + dX/dba db_a; out.dt and out.n copied.
+ * @param fu  the factor, from se23_preint_unc_reset_classic
+ * @param b_g new gyro bias estimate [rad/s]
+ * @param b_a new accel bias estimate [m/s^2]
+ * @param out out: the corrected factor (written only on SE23_OK)
  * @return as se23_preint_unc_correct, and SE23_ERR_DOMAIN if fu does not
  *         accumulate the classical Jacobians (se23_preint_unc_reset_classic).
  */

@@ -38,13 +38,28 @@ extern "C" {
  *  zero and never read: the rotation of an increment does not depend on
  *  the accelerometer. */
 typedef struct {
-    se23_mat3_t blk[3][2];
+    se23_mat3_t blk[3][2]; /**< blk[i][k]: block row i (0: phi, 1: nu, 2: rho),
+                            *   block column k (0: gyro, 1: accel); the rotation
+                            *   D = diag(R^T, R^T, R^T) of the increment's R
+                            *   turns it into B_k = D Bt (gauss.h) */
 } se23_input_blocks_t;
 
 /** Noise of one sample: white-noise variances of the sample averages,
  *  qg = sg^2/dt, qa = sa^2/dt, and bias random walk, wg = qg_w^2 dt,
  *  wa = qa_w^2 dt (gauss.h, "Noise discretisation"). */
 typedef struct {
+    /** @var se23_step_noise_t::qg
+     *  Variance of each axis of the gyro's white noise averaged over the
+     *  sample, gyro_noise^2 / dt [(rad/s)^2]. */
+    /** @var se23_step_noise_t::qa
+     *  Variance of each axis of the accelerometer's white noise averaged
+     *  over the sample, accel_noise^2 / dt [(m/s^2)^2]. */
+    /** @var se23_step_noise_t::wg
+     *  Variance of each axis of the gyro bias's random-walk step over the
+     *  sample, gyro_walk^2 dt [(rad/s)^2]. */
+    /** @var se23_step_noise_t::wa
+     *  Variance of each axis of the accelerometer bias's random-walk step
+     *  over the sample, accel_walk^2 dt [(m/s^2)^2]. */
     se23_real_t qg, qa, wg, wa;
 } se23_step_noise_t;
 
@@ -58,13 +73,15 @@ typedef struct {
 
 /** Work area of se23_gauss_predict_work (file comment). */
 typedef struct {
-    se23_step_inputs_t in;
+    se23_step_inputs_t in;        /**< the step's corrected sample, increment,
+                                   *   noise and input matrix */
     se23_pose_t T_next;           /**< the predicted mean */
 } se23_predict_work_t;
 
 /** Work area of se23_preint_unc_add_work (file comment). */
 typedef struct {
-    se23_step_inputs_t in;
+    se23_step_inputs_t in;        /**< the step's corrected sample, increment,
+                                   *   noise and input matrix */
 } se23_preint_work_t;
 
 #ifdef __cplusplus
