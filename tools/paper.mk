@@ -1,5 +1,4 @@
-# Paper reproductions (README "Preintegration with uncertainty and bias
-# correction"). Included by the top-level Makefile (BUILD, CC, WARN come from
+# Paper reproductions (tools/doc/pages/paper.md). Included by the top-level Makefile (BUILD, CC, WARN come from
 # there); host only, double build of the library.
 #
 #   make paper-table       the paper's Table "Higher-order errors for a

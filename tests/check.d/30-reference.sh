@@ -3,7 +3,7 @@
 #    not depend on the C precision: run from the double tree only);
 #  - crosscheck_*: the C library against the reference, both precision trees.
 #    Their accuracy tables are kept in $LOGDIR/accuracy-<precision>-<program>.md
-#    and merged into $LOGDIR/accuracy.md (quoted by the README's "Accuracy").
+#    and merged into $LOGDIR/accuracy.md (quoted by tools/doc/pages/accuracy.md).
 #    Each crosscheck also runs with every C result perturbed (SE23_XC_PERTURB,
 #    relative, above every bound of that precision times the largest condition
 #    factor a row divides by, ~3e3): that run passes only if EVERY row then

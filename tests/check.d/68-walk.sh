@@ -1,7 +1,7 @@
 # The real walk end to end (make demo-walk): the CSV imported, run through
 # the library's filter with the pedestrian preset under valgrind (double;
 # the float run plain), and the loop-closure error asserted within a
-# margin stated from the measured figure (README "Real walks": 0.361 m 3D
+# margin stated from the measured figure (tools/doc/pages/walks.md: 0.361 m 3D
 # at the last stance in double and in float; margin 25 %: 0.45 m) and its
 # normalised error within the chi-square bound (3 dof, 99 %: 11.34; 10.4
 # measured): the covariance tells the truth. With the floor assumption
@@ -75,7 +75,7 @@ w_strong_zupt() {
         ! "$WB/se23-walk" --max-closure-nis 11.34 "$WW/strong.log"
 }
 check walk-closure-nis-can-fail w_strong_zupt
-# The misalignment study (make walk-misalign, README "A real walk"): no
+# The misalignment study (make walk-misalign, tools/doc/pages/walks.md): no
 # rotation gives the closure of the run above; 0.5 degrees about y takes
 # more than 2 cm off it (0.323 m against 0.361 m).
 w_misalign() {
@@ -87,7 +87,7 @@ w_misalign() {
              END { exit (a != "" && b != "" && a - b > 0.02) ? 0 : 1 }' "$WW/misalign.txt"
 }
 check walk-misalign-sweep w_misalign
-# The walk's simulated twin (make walk-sim, README "A real walk"): with
+# The walk's simulated twin (make walk-sim, tools/doc/pages/walks.md): with
 # every sensor error in the preset's model the filter closes the loop to
 # 6.9 cm (1.4-7.1 cm over seeds 1-4; bound 10 cm) and its covariance
 # covers that (normalised error 0.26; bound 11.34, chi-square 3 dof at
@@ -129,12 +129,12 @@ w_sim_stairs() {
 }
 check walk-sim-stairs w_sim_stairs
 # The corpus shipped in tools/data (tools/data/foot: gaitmap, FGO, gdin 34;
-# and the x-io walk; README "Real walks"), every recording in double and
+# and the x-io walk; tools/doc/pages/walks.md), every recording in double and
 # float (and with the floor, reported): the preset keeps the floor off, so
 # no level is counted; the horizontal closure at the end within the
 # measured figure plus 25 %, in both precisions; the normalised error at
 # the end (NEES, 2 dof; x-io: 3 dof) within the 99 % bound, or where the
-# filter misses it (fgo-right 17.0, gaitmap-left 10.9: README) within the
+# filter misses it (fgo-right 17.0, gaitmap-left 10.9: tools/doc/pages/walks.md) within the
 # measured figure plus 25 %.
 w_corpus() {
     /usr/bin/python3 tools/walk/corpus.py --bin "$WB" --run "$WW/corpus" \

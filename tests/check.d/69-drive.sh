@@ -1,10 +1,10 @@
-# Real car drives (issue 35; tools/drive/, README "Real drives"). The
+# Real car drives (issue 35; tools/drive/, tools/doc/pages/drives.md). The
 # importer and the report on fabricated drives (tools/drive/selftest.sh:
 # counters, time map, outages, refusals of malformed and wrongly-scaled
 # files, the report's figures on a nav log with known errors). Then the
 # shipped RTK drive end to end (make demo-drive: every run of the table in
 # double and in float), its figures held within 25 % of those measured
-# (README "Real drives", this machine): with every fix the median
+# (tools/doc/pages/drives.md, this machine): with every fix the median
 # horizontal error against the RTK truth 0.011 m (bound 0.014); the median
 # end error of the outages with the non-holonomic constraint 3.47 / 1.78 /
 # 1.69 % of the distance for 10 / 30 / 60 s (bounds 4.3 / 2.2 / 2.1); float

@@ -5,7 +5,7 @@
 #    classical pipeline of Forster et al. at T = 1 s, 10 s and 60 s, the
 #    exact B_k no worse than the basic one at 1 s, and in position at 1 s the
 #    paper's correction on the Deltas of its own eq. backtofuture
-#    (se23_imu_increment_paper) no worse than on the exact Deltas (the README
+#    (se23_imu_increment_paper) no worse than on the exact Deltas (tools/doc/pages/paper.md
 #    has the full table and which increment each row uses). On the first 60 s
 #    alone the proposed correction loses at 60 s, and the same check must
 #    fail there (the check can fail);

@@ -6,7 +6,7 @@
 # and an empty corpus under $BUILD/fuzz/smoke, the same inputs on every run
 # (-use_cmp=0, tests/fuzz/run.sh). The oracle can fail: with
 # FUZZ_STRICT_PSD=1 the kept input of the one known open finding (fuzz.h,
-# README "Fuzzing") must abort the float kalman target.
+# tools/doc/pages/fuzzing-soak.md) must abort the float kalman target.
 FZ="$BUILD/fuzz"
 mkdir -p "$FZ"
 fz_probe() {

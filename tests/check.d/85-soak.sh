@@ -4,7 +4,7 @@
 # value, R in SO(3) within SE23_CFG_ROT_TOL, P positive semidefinite to
 # rounding, no failed step (the program's exit status); and the same seed
 # twice gives the same final-state hash (determinism). `make soak` runs the
-# 10^7-step version the README reports.
+# 10^7-step version tools/doc/pages/fuzzing-soak.md reports.
 SB="$BUILD/harness/bin"
 SW="$BUILD/check/soak"
 mkdir -p "$SW"

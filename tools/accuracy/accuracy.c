@@ -28,7 +28,8 @@
 
 /* The propagations compared with the truth. FACTORS applies the samples
  * through preintegrated factors of FACTOR_HZ^-1 s (se23_preint_add, then
- * se23_preint_predict_carried on the state), the float remedy of the README. */
+ * se23_preint_predict_carried on the state), the float remedy of
+ * tools/doc/pages/propagation.md. */
 enum { EXACT, FACTORS, FORSTER, REMARK_PRINTED, PAPER, SENSOR_FREE, N_RUNS };
 static const char *const run_name[N_RUNS] = {
     "exact (se23_imu_step)", "exact, through 0.25 s factors (se23_preint)",

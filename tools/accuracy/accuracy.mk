@@ -2,7 +2,7 @@
 # after 60 s and 1 h against a long-double truth, MEMS-grade and
 # navigation-grade scenarios with the Earth rate, exact vs three first-order
 # increments: Forster et al.'s, the paper's remark as printed and the paper's
-# eq. backtofuture (README "IMU propagation and preintegration"). Included by the
+# eq. backtofuture (tools/doc/pages/propagation.md). Included by the
 # top-level Makefile; takes about 15 s.
 .PHONY: accuracy
 ACC_SRCS := tools/accuracy/accuracy.c tools/accuracy/scenario.c tools/accuracy/truth.c

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Print the README's cross-check table (both precisions side by side).
+"""Print the cross-check table of tools/doc/pages/accuracy.md (both precisions side by side).
 
 Runs crosscheck_so3 and crosscheck_se23 of the double and float CMake trees
 (make tests-double tests-float first) and joins their rows:

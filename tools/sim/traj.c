@@ -111,7 +111,7 @@ static traj_raw_t raw_nav(ld_t t)
 }
 
 /*
- * A foot-mounted IMU on a walk (README "A real walk", its simulated twin):
+ * A foot-mounted IMU on a walk (tools/doc/pages/walks.md, its simulated twin):
  * WALK_REST s at rest, WALK_STRIDES strides around a circle that they
  * close exactly, then at rest again. A stride of WALK_PERIOD s is a stance
  * (the foot flat and still) then a swing of WALK_SWING s in which, with

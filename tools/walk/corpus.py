@@ -4,14 +4,14 @@
   corpus.py --bin BIN --run RUNDIR [--precision double|float|both] DIR...
 
 finds the recordings under each DIR by their layout (the formats of
-../shared/data/foot and the x-io walk, README "Real walks"), and for each:
+../shared/data/foot and the x-io walk, tools/doc/pages/walks.md), and for each:
 imports it (se23-import, the column mapping of its format and nothing
 else), runs the pedestrian preset (se23-ins --preset foot, the rate the
 import measured), reads the per-state CSV se23-walk writes and scores it
 against the recording's truth. Prints one table; exits 1 if a recording
 could not be run.
 
-Scores (README "Real walks"):
+Scores (tools/doc/pages/walks.md):
   dist      the distance walked: the truth's path where there is one, else
             the estimate's through its stance positions
   closure   the position at the start of the last stance, and at the end,
@@ -119,7 +119,7 @@ def fgo(root):
                           ("right", "imuMeasRight.csv", slice(4, 7))):
         opts = ["--time-col", "0", "--rate", "60", "--accel-cols", "2,3,4",
                 "--gyro-cols", "5,6,7", "--accel-unit", "m/s2", "--gyro-unit", "rad/s"]
-        # README: the truth's z points down (a right-handed frame, checked:
+        # its README: the truth's z points down (a right-handed frame, checked:
         # its turns have the gyroscope's sense)
         out.append(Recording(f"fgo-{side}", os.path.join(root, f), opts, 44.99,
                              per_sample_truth(gt[:, 0] / 60.0, gt[:, cols]),
@@ -133,7 +133,7 @@ def gdin(root, nn):
     gcp = np.genfromtxt(base + "_gcp.csv", delimiter=",", skip_header=1)
     strides = np.genfromtxt(base + "_strideIndex_timestamp_gcpX_gcpY.csv", delimiter=",",
                             skip_header=1)
-    # the README: recording 40's Time column is irregular; its rows are 200 Hz
+    # gdin's README: recording 40's Time column is irregular; its rows are 200 Hz
     time = ["--time-col", "0", "--rate", "200"] if nn == "40" else []
     opts = time + ["--accel-cols", "2,3,4", "--gyro-cols", "5,6,7", "--accel-unit", "g",
                    "--gyro-unit", "rad/s"]

@@ -4,7 +4,7 @@
  * error of a walk that ends where it started, the distance walked, the
  * stance phases, and a CSV for the plots (tools/walk/plot_walk.py).
  *
- * Definitions (README "A real walk"):
+ * Definitions (tools/doc/pages/walks.md):
  *  - a stance phase is a run of nav states with the detector's stationary
  *    flag (status bit 0x80), runs closer than --merge seconds merged (the
  *    flag may flicker within one stance);
