@@ -1,15 +1,27 @@
-# make doc: the reference, Doxygen over include/se23/ with the README as its
-# main page (tools/doc/Doxyfile), into $(BUILD)/doc/html/; Doxygen's
-# warnings (undocumented parameters and members) into
-# $(BUILD)/doc/warnings.txt, their count printed. make check (step 52-doc)
-# holds the count at or below DOC_WARNINGS_MAX, so that a new public symbol
-# comes documented while the existing ones are being (issue 36).
-DOC_WARNINGS_MAX := 92
+# make doc: the reference, Doxygen (tools/doc/Doxyfile) over the public
+# headers include/se23/, the manual pages tools/doc/pages/*.md and the
+# README as the main page, into $(BUILD)/doc/html/ (index.html printed).
+# Doxygen's warnings go to $(BUILD)/doc/warnings.txt; any warning fails
+# the target (the Doxyfile's WARN_AS_ERROR = FAIL_ON_WARNINGS, and their
+# count here): the reference is still written, and the count per file and
+# the first warnings are printed. make check (step 52-doc) builds it the
+# same way and requires zero warnings, audits Doxygen's XML for what it
+# does not warn about (an enumerator, a header without @file), and shows
+# that planted undocumented symbols fail it (issue 36).
+DOC_MAX_SHOWN := 20
 
 .PHONY: doc
 doc: deps
 	@mkdir -p $(BUILD)/doc
-	@SE23_DOC_OUT=$(abspath $(BUILD))/doc doxygen tools/doc/Doxyfile 2>$(BUILD)/doc/warnings.txt
-	@echo "se23 reference: $(BUILD)/doc/html/index.html;" \
-	    "$$(grep -c 'warning:' $(BUILD)/doc/warnings.txt) Doxygen warnings" \
-	    "(at most $(DOC_WARNINGS_MAX); $(BUILD)/doc/warnings.txt)"
+	@out=$(BUILD)/doc; \
+	SE23_DOC_OUT=$(abspath $(BUILD))/doc doxygen tools/doc/Doxyfile 2>$$out/warnings.txt; \
+	rc=$$?; \
+	n=$$(grep -cE '(warning|error): ' $$out/warnings.txt); \
+	echo "se23 reference: $$out/html/index.html; $$n Doxygen warnings ($$out/warnings.txt)"; \
+	if [ "$$n" -ne 0 ] || [ "$$rc" -ne 0 ]; then \
+	    sed -nE 's|^$(abspath .)/||; s/^([^ :]*):[0-9]+: (warning|error): .*/\1/p; s/^(warning|error): .*/(configuration)/p' \
+	        $$out/warnings.txt | sort | uniq -c; \
+	    grep -E '(warning|error): ' $$out/warnings.txt | sed 's|^$(abspath .)/||' | head -n $(DOC_MAX_SHOWN); \
+	    echo "make doc: failed (doxygen status $$rc, $$n warnings; every one must be fixed)"; \
+	    exit 1; \
+	fi
