@@ -20,7 +20,7 @@
  * and only that difference becomes se23_real_t; the ECEF difference is
  * formed from sin/cos of the difference (no large number is subtracted
  * from another) and the leading terms are carried as unevaluated sums of
- * two reals (see src/geodetic.c for the formulas and the error budget).
+ * two reals (see src/imu/geodetic.c for the formulas and the error budget).
  *
  * Supported range (both builds; outside it: SE23_ERR_DOMAIN):
  *  - |lat| <= 90 deg, |lon| <= 180 deg, |h| <= SE23_GEO_H_MAX_MM;
@@ -30,7 +30,7 @@
  *    SE23_GEO_DOWN_MAX_M. Near the poles (|lat| > ~82 deg) the 10 deg of
  *    longitude is the tighter east-west limit.
  * Accuracy of se23_geo_to_ned against the exact ECEF route (measured by
- * tests/unit/test_geodetic.c and the Eigen cross-check): float build
+ * tests/unit/imu/test_geodetic.c and the Eigen cross-check): float build
  * within ~0.6 of the float spacing of the largest component: 0.5 mm within
  * 10 km, 4.8 mm within 100 km (spacing 7.8 mm; tested bounds 1 mm and
  * 6 mm), 7.8 mm within 150 km; double build ~1e-11 m (tested 1e-9 m).

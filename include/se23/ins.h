@@ -126,7 +126,7 @@
  * the gravity direction from the window, a start whose acceleration grows
  * smoothly from zero would pass it; the filter knows where gravity is and
  * also requires the window's mean acceleration R fbar + g to be noise
- * (src/ins_rest.c, accel_nis; the mean's 1-sigma is rest_accel_sigma, or
+ * (src/nav/ins_rest.c, accel_nis; the mean's 1-sigma is rest_accel_sigma, or
  * sigma_a / sqrt(W) for white noise: a vibration that the detector's
  * sigma_a must allow averages out of the mean), unless gravity_test_off is
  * set: a
@@ -144,7 +144,7 @@
  * at w about a point zupt_lever away, a foot rolling over its heel or toe,
  * moves at up to zupt_lever |w|, the same in the W samples of a window;
  * applied as the body-frame R^T v = 0, its information, in one update with
- * the ZARU on the filter's own state, src/kalman_rest.c) and, with bias
+ * the ZARU on the filter's own state, src/kalman/kalman_rest.c) and, with bias
  * states, once the rest has lasted zaru_after seconds, w_meas + b_g =
  * R^T Omega (the Earth rate a body at rest senses; zero on flat Earth;
  * 1-sigma zaru_sigma_w per axis, its O(|Omega| |phi|) dependence on the
@@ -182,7 +182,7 @@
  * Cartesian and fixed to the Earth, so the Earth rate is one vector in it
  * and the Coriolis and centrifugal terms stay exact however far the
  * vehicle goes. Only gravity depends on the position: with gravity_step >
- * 0 it follows the vehicle (src/ins_gravity.c: the local vertical tilts
+ * 0 it follows the vehicle (src/nav/ins_gravity.c: the local vertical tilts
  * from the origin's by 0.16 mrad per km), evaluated at the centre of the
  * cube of gravity_step metres the position is in; its direction is right
  * to (d/R)^2 at d from the origin (0.1 mg at 20 km, 0.6 mg at 50 km: the
@@ -656,7 +656,7 @@ se23_real_t se23_ins_detector_threshold(int window, se23_real_t z);
  * at rate_hz on a foot, latitude lat (for gravity): flat Earth, 15 states,
  * ZUPT at stance, ZARU after 0.5 s at rest, alignment from the first
  * second at rest, no GNSS. Every value and why it was chosen is in
- * src/ins_preset.c. Pass cfg to se23_ins_setup and align to se23_ins_align:
+ * src/nav/ins_preset.c. Pass cfg to se23_ins_setup and align to se23_ins_align:
  * a configuration the preset returns always passes se23_ins_setup (both
  * judge lat by se23_earth_gravity's rule).
  * @param rate_hz the IMU rate [Hz], 50 to 10,000 (measure it: se23-import)
@@ -676,7 +676,7 @@ se23_status_t se23_ins_preset_foot(se23_real_t rate_hz, se23_real_t lat,
  * in a car with GNSS, latitude lat: rotating Earth, 15 states, the
  * non-holonomic constraint once a second, ZUPT and ZARU at stops (the
  * filter's speed confirming rest), alignment from the first 2 s at rest
- * with the heading from the GNSS course ("Vehicles", src/ins_preset.c for
+ * with the heading from the GNSS course ("Vehicles", src/nav/ins_preset.c for
  * every value). The installation is the caller's: lever_b (the antenna)
  * and mount_bv (the IMU's mounting) are zero here.
  * @param rate_hz the IMU rate [Hz], 50 to 10,000

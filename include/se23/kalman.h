@@ -30,8 +30,8 @@
  * part: the models below touch one to three blocks, so a GNSS update
  * costs about 900 multiply-adds (1,700 with the Joseph step) instead of
  * the 9,500 of the dense Joseph form
- * (src/kalman_parts.c gives the count). P+ is the covariance of the error
- * at the old estimate; the O(|dx|) change of coordinates of the
+ * (src/kalman/kalman_halves.c gives the count). P+ is the covariance of
+ * the error at the old estimate; the O(|dx|) change of coordinates of the
  * retraction (a Jacobian close to I) is neglected, as usual in
  * error-state filters.
  *

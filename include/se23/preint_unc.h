@@ -41,7 +41,7 @@
  *   Delta_true = exp(zeta) Delta, zeta = Ad_Delta xi ~ N(0, P_left),
  *   Delta(bbar + db) = exp(J_left db + O(db^2)) Delta(bbar),
  * P_left = Ad_Delta P Ad_Delta^T, J_left = Ad_Delta J. Their recursion
- * (cov_step.h, "The left form") has the constant sparse transition
+ * (src/cov/cov_step.h, "The left form") has the constant sparse transition
  *   F = [[I, 0, 0], [0, I, 0], [0, dt I, I]]
  * and moves the rotation by R^T from the covariance to the input matrix:
  * half the arithmetic of the right form per sample. se23_preint_unc_cov

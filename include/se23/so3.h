@@ -9,7 +9,8 @@
  *   H(phi)   = sum_n phi^^n / (n+2)!   (so that int_0^1 s J(s phi) ds = H(phi))
  *   K(phi)   = sum_n phi^^n / (n! (n+2))
  * Each has a closed form in theta; near theta = 0 the coefficients are
- * evaluated by their Taylor series (thresholds per precision, see series.c).
+ * evaluated by their Taylor series (thresholds per precision, see
+ * src/lie/so3_series.c).
  *
  * Functions index:
  *   se23_so3_hat, se23_so3_vee            skew matrix <-> vector
