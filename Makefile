@@ -11,8 +11,10 @@
 #   make doc     the reference (Doxygen) into $(BUILD)/doc/html
 #   make clean   removes $(BUILD): the tree is then as cloned
 #
-# Firmware builds can instead compile src/*.c with include/ on their include
-# path and -DSE23_CFG_DOUBLE=0 or 1; nothing else is needed.
+# Firmware builds can instead compile every .c under src/ with include/ and
+# port/ on their include path and -DSE23_CFG_DOUBLE=0 or 1; nothing else is
+# needed (src/ is layered: base, lie, imu, cov, kalman, nav; see
+# tools/layers.py).
 
 BUILD ?= build
 CC ?= cc
@@ -38,15 +40,31 @@ endif
 export PYTHONDONTWRITEBYTECODE := 1
 export MPLCONFIGDIR := $(abspath $(BUILD))/matplotlib
 
-LIB_SRCS := $(sort $(wildcard src/*.c))
-LIB_HDRS := $(wildcard include/se23/*.h src/*.h)
+LIB_SRCS := $(sort $(wildcard src/*/*.c src/*/*/*.c))
+LIB_HDRS := $(wildcard include/se23/*.h src/*/*.h)
+# The library's objects sit in one folder per build, named after their
+# sources (src/nav/ins.c: ins.o), so that the gates read one folder.
+LIB_OBJ_NAMES := $(notdir $(LIB_SRCS:.c=.o))
+ifneq ($(words $(LIB_OBJ_NAMES)),$(words $(sort $(LIB_OBJ_NAMES))))
+$(error two sources under src/ share a file name)
+endif
+# $(call lib_objs,folder): the library's objects in folder
+lib_objs = $(addprefix $(1)/,$(LIB_OBJ_NAMES))
+# $(call lib_obj_rules,folder,recipe): one rule per source, folder/name.o
+# from src/<layer>/name.c; recipe sees $$< and $$@ (escape $ twice).
+define lib_obj_rule
+$(1)/$(notdir $(3:.c=.o)): $(3) $(LIB_HDRS)
+	@mkdir -p $$(@D)
+	$(2)
+endef
+lib_obj_rules = $(foreach s,$(LIB_SRCS),$(eval $(call lib_obj_rule,$(1),$(2),$(s))))
 
 # Strict warnings: everything is C99 and warning-free; the library itself
 # also takes the numerical-hygiene warnings.
 WARN := -std=c99 -Wall -Wextra -Wpedantic -Werror
 LIB_WARN := $(WARN) -Wconversion -Wdouble-promotion -Wshadow -Wvla \
             -Wstrict-prototypes -Wmissing-prototypes -Wcast-qual
-LIB_CFLAGS := $(LIB_WARN) -O2 -Iinclude -Isrc -fstack-usage
+LIB_CFLAGS := $(LIB_WARN) -O2 -Iinclude -Iport -fstack-usage
 
 M4F_FLAGS := -mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard
 M7_FLAGS := -mcpu=cortex-m7 -mthumb -mfpu=fpv5-d16 -mfloat-abi=hard
@@ -61,12 +79,9 @@ deps:
 
 # $(call lib_rules,variant,compiler,archiver,extra flags)
 define lib_rules
-$(BUILD)/lib-$(1)/%.o: src/%.c $(LIB_HDRS) | $(BUILD)/lib-$(1)
-	$(2) $(LIB_CFLAGS) $(4) -c $$< -o $$@
-$(BUILD)/lib-$(1)/libse23.a: $(patsubst src/%.c,$(BUILD)/lib-$(1)/%.o,$(LIB_SRCS))
+$(call lib_obj_rules,$(BUILD)/lib-$(1),$(2) $(LIB_CFLAGS) $(4) -c $$< -o $$@)
+$(BUILD)/lib-$(1)/libse23.a: $(call lib_objs,$(BUILD)/lib-$(1))
 	rm -f $$@ && $(3) rcs $$@ $$^
-$(BUILD)/lib-$(1):
-	mkdir -p $$@
 endef
 
 $(eval $(call lib_rules,host-double,$(CC),ar,-DSE23_CFG_DOUBLE=1))

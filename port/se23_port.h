@@ -4,11 +4,11 @@
  *        and the only way the library and its target images reach it.
  *
  * 1. Math overrides (optional, read by the library). Every libm call in src/
- *    goes through one wrapper in src/se23_math.h, which uses the macros
+ *    goes through one wrapper in src/base/se23_math.h, which uses the macros
  *        SE23_SQRT  SE23_ATAN2  SE23_FMOD  SE23_FABS
  *    when they are defined (default: sqrt/atan2/... in the double build,
  *    sqrtf/atan2f/... in the float build). Sine and cosine are the
- *    library's own (src/trig.c: one argument reduction for both). A port defines them in its options
+ *    library's own (src/base/trig.c: one argument reduction for both). A port defines them in its options
  *    header, se23_port_opts.h, and the firmware compiles the library with
  *        -Iport/<name> -DSE23_CFG_OPTS_FILE='"se23_port_opts.h"'
  *    (include/se23/config.h includes that file before its own defaults), or

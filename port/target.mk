@@ -295,19 +295,18 @@ $(foreach f,$(TGT_FIXTURES),$(eval $(call tgt_fixture,$(f))))
 # The Cortex-M port's options header (port/cortex-m/se23_port_opts.h) must
 # compile with the library's strict flags and replace every sqrt call.
 .PHONY: port-opts
-port-opts: $(patsubst src/%.c,$(TGT)/m4f-float/opts/%.o,$(LIB_SRCS)) \
-           $(patsubst src/%.c,$(TGT)/m7-double/opts/%.o,$(LIB_SRCS))
+port-opts: $(call lib_objs,$(TGT)/m4f-float/opts) $(call lib_objs,$(TGT)/m7-double/opts)
 	@! arm-none-eabi-nm -u $^ | grep -Ew 'sqrtf?' || \
 	    { echo "sqrt still called with the port's options"; exit 1; }
 	@echo "port-opts: $(words $^) objects, no sqrt/sqrtf call"
-$(TGT)/m4f-float/opts/%.o: src/%.c $(LIB_HDRS) port/cortex-m/se23_port_opts.h
-	mkdir -p $(@D)
-	$(ARM_CC) $(filter-out -fstack-usage,$(LIB_CFLAGS)) $(M4F_FLAGS) -DSE23_CFG_DOUBLE=0 \
-	    -Iport/cortex-m -DSE23_CFG_OPTS_FILE='"se23_port_opts.h"' -c $< -o $@
-$(TGT)/m7-double/opts/%.o: src/%.c $(LIB_HDRS) port/cortex-m/se23_port_opts.h
-	mkdir -p $(@D)
-	$(ARM_CC) $(filter-out -fstack-usage,$(LIB_CFLAGS)) $(M7_FLAGS) -DSE23_CFG_DOUBLE=1 \
-	    -Iport/cortex-m -DSE23_CFG_OPTS_FILE='"se23_port_opts.h"' -c $< -o $@
+PORT_OPTS_CFLAGS := $(filter-out -fstack-usage,$(LIB_CFLAGS)) -Iport/cortex-m \
+                    -DSE23_CFG_OPTS_FILE='"se23_port_opts.h"'
+$(call lib_obj_rules,$(TGT)/m4f-float/opts,$(ARM_CC) $(PORT_OPTS_CFLAGS) $(M4F_FLAGS) \
+    -DSE23_CFG_DOUBLE=0 -c $$< -o $$@)
+$(call lib_obj_rules,$(TGT)/m7-double/opts,$(ARM_CC) $(PORT_OPTS_CFLAGS) $(M7_FLAGS) \
+    -DSE23_CFG_DOUBLE=1 -c $$< -o $$@)
+$(call lib_objs,$(TGT)/m4f-float/opts) $(call lib_objs,$(TGT)/m7-double/opts): \
+    port/cortex-m/se23_port_opts.h
 
 # Gates on the library objects built for the target (also run one by one by
 # tests/check.d/45-gates.sh): no soft double in the float build, no heap and

@@ -532,7 +532,7 @@ static inline int fz_gauss_same(const se23_gauss_t *a, const se23_gauss_t *b)
 
 /*
  * A covariance step or update is computed to rounding of its inputs
- * (src/kalman_parts.c: P+ is the exact Schur complement of a matrix within
+ * (src/kalman/kalman_halves.c: P+ is the exact Schur complement of a matrix within
  * (m + 1) eps of M = [[S, C^T], [C, P]]; a step Phi P Phi^T + Q likewise
  * within a few eps of |Phi| |P| |Phi|^T), while se23_gauss_check judges
  * the result relative to the result's own largest variance. When a step
@@ -667,7 +667,7 @@ static inline int fz_check_cov_step(const se23_gauss_t *g, double bound, const c
  * largest walk term: per entry a few eps of |Phi| |P| |Phi|^T (rows of Phi
  * sum to at most r, cov_step.c), plus the input's own tolerance carried
  * through Phi: the check admits P + (SE23_CFG_COV_TOL s + 2 FLT_MIN) I
- * (cov.h), s its largest variance, so both the relative and the absolute
+ * (cov_check.h), s its largest variance, so both the relative and the absolute
  * part (a variance of -1e-202 passes; a step with |v| = 1e114 turns it
  * into -5e26), times n for the spectral norm.
  */

@@ -20,7 +20,7 @@ FUZZ_NICE ?= nice -n 10
 FZ := $(BUILD)/fuzz
 FUZZ_SAN := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 FUZZ_COMMON := -O1 -g $(FUZZ_SAN) -Iinclude
-FUZZ_LIB_CFLAGS := $(LIB_WARN) $(FUZZ_COMMON) -Isrc -fsanitize=fuzzer-no-link
+FUZZ_LIB_CFLAGS := $(LIB_WARN) $(FUZZ_COMMON) -Iport -fsanitize=fuzzer-no-link
 FUZZ_CFLAGS := $(WARN) -Wshadow $(FUZZ_COMMON) -Itests/fuzz -fsanitize=fuzzer
 FUZZ_LIB_TARGETS := so3 se23 earth imu preint gauss kalman preint_unc stationary align ins
 FUZZ_BINS := $(foreach t,$(FUZZ_LIB_TARGETS),$(FZ)/bin/fuzz_$(t)-double $(FZ)/bin/fuzz_$(t)-float) \
@@ -30,10 +30,8 @@ FUZZ_BINS := $(foreach t,$(FUZZ_LIB_TARGETS),$(FZ)/bin/fuzz_$(t)-double $(FZ)/bi
 
 # $(call fuzz_prec,double|float,0|1)
 define fuzz_prec
-$(FZ)/lib-$(1)/%.o: src/%.c $(LIB_HDRS)
-	@mkdir -p $$(dir $$@)
-	$(FUZZ_CC) $(FUZZ_LIB_CFLAGS) -DSE23_CFG_DOUBLE=$(2) -c $$< -o $$@
-$(FZ)/lib-$(1)/libse23.a: $(patsubst src/%.c,$(FZ)/lib-$(1)/%.o,$(LIB_SRCS))
+$(call lib_obj_rules,$(FZ)/lib-$(1),$(FUZZ_CC) $(FUZZ_LIB_CFLAGS) -DSE23_CFG_DOUBLE=$(2) -c $$< -o $$@)
+$(FZ)/lib-$(1)/libse23.a: $(call lib_objs,$(FZ)/lib-$(1))
 	rm -f $$@ && ar rcs $$@ $$^
 $(FZ)/bin/fuzz_%-$(1): tests/fuzz/fuzz_%.c tests/fuzz/fuzz.h $(FZ)/lib-$(1)/libse23.a $(LIB_HDRS)
 	@mkdir -p $$(dir $$@)

@@ -119,7 +119,7 @@ static int in_support(const se23_real_t *P, int n, int j)
 }
 
 /* The bound of the known finding (fuzz.h) for the update of g with y:
- *  - rounding (src/kalman_parts.c): P+ is the exact Schur complement of a
+ *  - rounding (src/kalman/kalman_halves.c): P+ is the exact Schur complement of a
  *    matrix within g (M_ii M_jj)^1/2 of M = [[S, C^T], [C, P]],
  *    g = (m + 1) eps / (1 - (m + 1) eps): a perturbation of at most
  *    e = g (n + m) max_i M_ii, which reaches P+ directly and through
@@ -235,7 +235,7 @@ static double update_bound(const se23_gauss_t *g, const se23_meas_t *y)
         }
     }
     /* the rounding dM passes through S^-1 as well: K dS K^T, |K|^2 |dS|
-     * (src/kalman_parts.c states only the first term, which does not hold
+     * (src/kalman/kalman_halves.c states only the first term, which does not hold
      * for a nearly singular S: R = 0 and rows that pin a state jointly) */
     {
         const long double b = 4.0L * (gam * (n + m) * mx + ef) * (1.0L + 2.0L * sqrtl(k2) + k2) +

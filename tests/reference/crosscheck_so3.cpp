@@ -1,12 +1,12 @@
 // Cross-check of include/se23/so3.h and the internal series coefficients
-// (src/so3_series.h) against the Eigen reference: 10,000 seeded random inputs
+// (src/lie/so3_series.h) against the Eigen reference: 10,000 seeded random inputs
 // per routine plus the edge angles of issue 2. See crosscheck.hpp, README
 // "Accuracy". Usage: crosscheck_so3 [markdown-output-file]
 #include "crosscheck.hpp"
 
 extern "C" {
 #include "se23/so3.h"
-#include "so3_series.h"
+#include "lie/so3_series.h"
 }
 
 namespace {

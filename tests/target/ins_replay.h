@@ -140,12 +140,12 @@ typedef void (*insr_hook_t)(void *ctx, const se23_ins_t *ins, int k, int what, i
 int insr_drive(const insr_seq_t *s, se23_ins_t *ins, insr_check_t *got, insr_hook_t hook,
                void *ctx);
 
-/** The quantile of the filter's mean-acceleration test at rest (src/ins.c,
+/** The quantile of the filter's mean-acceleration test at rest (src/nav/ins.c,
  *  ACCEL_TEST_Q: chi^2_3 at 0.999). */
 #define INSR_ACCEL_TEST_Q 16.27
 
 /**
- * The filter's second rest test (src/ins.c, accel_nis) recomputed in double
+ * The filter's second rest test (src/nav/ins.c, accel_nis) recomputed in double
  * from its public state, for the generators (they check that it reproduces
  * every rest flag the filter set and measure how far each decision lies
  * from its threshold) and the walk image (its deviation from the host's):

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes src/cov_step_kernel.c, the per-sample covariance kernels of
+"""Writes src/cov/gen/cov_step_kernel.c, the per-sample covariance kernels of
 cov_step.h as straight-line code: the covariance step for 9 states and for
 15, and the three steps of a preintegrated factor's left form (its input
 matrix, covariance and bias Jacobian).
@@ -25,7 +25,7 @@ import sys
 import textwrap
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-OUT = os.path.join(HERE, "..", "..", "src", "cov_step_kernel.c")
+OUT = os.path.join(HERE, "..", "..", "src", "cov", "gen", "cov_step_kernel.c")
 
 
 class Gen:
@@ -614,7 +614,7 @@ def source():
             " * algorithm of cov_step.c's file comment) and the steps of a\n"
             " * preintegrated factor's left form (cov_step.h), every 3x3 product\n"
             " * expanded and its structural zeros skipped. */\n"
-            "#include \"cov_step.h\"\n\n" + "\n".join(parts))
+            "#include \"../cov_step.h\"\n\n" + "\n".join(parts))
 
 
 def main():
@@ -626,7 +626,7 @@ def main():
         except OSError:
             current = ""
         if current != text:
-            print("src/cov_step_kernel.c is stale: run python3 tools/gen/gen_cov_step.py",
+            print("src/cov/gen/cov_step_kernel.c is stale: run python3 tools/gen/gen_cov_step.py",
                   file=sys.stderr)
             return 1
         return 0

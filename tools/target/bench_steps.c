@@ -21,7 +21,7 @@
 
 /* internal: the filter's structured NHC update (no -Isrc in the target's
  * flags) */
-#include "../../src/kalman_nhc.h"
+#include "../../src/kalman/kalman_nhc.h"
 
 static struct {
     se23_earth_model_t model;

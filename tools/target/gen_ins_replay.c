@@ -3,7 +3,7 @@
  *
  * The recorded sequences of the navigation-filter replay on the target
  * (tests/target/ins_replay.c, format in tests/target/ins_replay.h), and
- * their reference outputs from the same filter (src/ins*.c, the host's
+ * their reference outputs from the same filter (src/nav/ins*.c, the host's
  * double build, driven by the same tests/target/ins_replay_drive.c).
  *
  * The sequences (deterministic: fixed seeds, no clock):

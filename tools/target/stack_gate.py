@@ -77,8 +77,11 @@ def parse_ci(libdir, g):
 def address_taken(libdir, g):
     """Library functions whose address is taken (possible indirect targets)."""
     taken = set()
+    # The objects are flat (ins.o); the sources sit in layer folders
+    # (src/nav/ins.c), which is how the call graph names their statics.
+    sources = {os.path.basename(s): s for s in glob.glob("src/**/*.c", recursive=True)}
     for obj in sorted(glob.glob(os.path.join(libdir, "*.o"))):
-        src = "src/" + os.path.basename(obj)[:-2] + ".c"
+        src = sources.get(os.path.basename(obj)[:-2] + ".c", "")
         text_syms = set()
         for line in subprocess.run([NM, obj], check=True, capture_output=True,
                                    text=True).stdout.splitlines():
