@@ -23,8 +23,8 @@ ARM_AR ?= arm-none-eabi-ar
 
 # Parallel jobs of the test builds: one per core, but no more than the
 # available memory (MemAvailable) allows at JOB_MEM_KB per job: the heaviest
-# compile, tests/reference/ref_matfun.cpp, peaks at 2.5 GB resident (README
-# "First run"). JOBS=N overrides.
+# compile, tests/reference/ref_matfun.cpp, peaks at 2.5 GB resident
+# (tools/doc/pages/first-run.md). JOBS=N overrides.
 JOB_MEM_KB := 2600000
 ifeq ($(origin JOBS),undefined)
 JOBS := $(shell awk -v cores="$$(nproc 2>/dev/null || echo 1)" \

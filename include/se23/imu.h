@@ -21,7 +21,7 @@
  *
  * Float build. Every step rounds the state's R (entries of size 1) once more;
  * over an hour at 100 Hz that walks the attitude by ~1e-4 rad and the
- * position by kilometres (README, `make accuracy`). Feeding the samples into
+ * position by kilometres (tools/doc/pages/propagation.md, `make accuracy`). Feeding the samples into
  * short preintegrated factors (se23_preint_add, 0.1-0.5 s) and applying each
  * factor with se23_preint_predict_carried rounds R only once per factor and
  * loses about 100 times less; the Deltas, near the identity, keep their
@@ -83,7 +83,7 @@ se23_status_t se23_imu_increment(const se23_imu_sample_t *s, se23_pose_t *ups);
  * dt^2 f, DESIGN.md section 3). First order in dt: its error per sample is
  * O(|w| |f| dt^2) in velocity, so over a fixed time the error shrinks like dt.
  * Provided to measure what the exact increment gains and to run Forster et
- * al.'s pipeline as they define it (README).
+ * al.'s pipeline as they define it (tools/doc/pages/propagation.md).
  * @param s   the sample, as for se23_imu_increment
  * @param ups out: Forster et al.'s increment (written only on SE23_OK)
  * @return as se23_imu_increment.
@@ -98,7 +98,7 @@ se23_status_t se23_imu_increment_forster(const se23_imu_sample_t *s,
  * differs from se23_imu_increment_forster only in the position, by
  * dt^2 f / 2, so over a fixed time its position error also shrinks like dt,
  * with a larger constant (the whole f dt^2 / 2 of every sample is lost).
- * Provided to run the paper's comparisons with its own increment (README).
+ * Provided to run the paper's comparisons with its own increment (tools/doc/pages/paper.md).
  * @param s   the sample, as for se23_imu_increment
  * @param ups out: the paper's increment (written only on SE23_OK)
  * @return as se23_imu_increment.

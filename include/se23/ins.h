@@ -110,7 +110,7 @@
  * samples (prediction and the zero-velocity updates), in that call.
  * Memory: sizeof(se23_ins_t) = 17,992 B + SE23_INS_RING x 72 B in double,
  * 9,240 B + SE23_INS_RING x 48 B in float (27,208 / 15,384 B with the
- * default ring; README "The navigation filter"; test_ins.c asserts it),
+ * default ring; tools/doc/pages/filter.md; test_ins.c asserts it),
  * the kernels' work areas included (1,512 / 756 B, kept here and not on
  * the stack of the calls);
  * the ring must hold
@@ -631,7 +631,7 @@ typedef struct {
     se23_gauss_t g;               /**< state in the model's coordinates */
     se23_gauss_t work;            /**< scratch of the updates (user's coordinates) */
     /** The kernels' work areas (work.h), here and not on the stack of the
-     *  filter calls (README, "The navigation filter"); one kernel call at a
+     *  filter calls (tools/doc/pages/filter.md); one kernel call at a
      *  time uses them. */
     union {
         se23_predict_work_t predict; /**< the prediction */
@@ -789,7 +789,7 @@ se23_ins_verdict_t se23_ins_gnss(se23_ins_t *ins, const se23_ins_gnss_t *fix);
  *         se23_gauss_check if the state the filter holds fails it (every
  *         update is checked before it is kept, but a covariance step is
  *         trusted, and one within its rounding bound can still leave a
- *         state outside the check: README "Fuzzing"); SE23_ERR_NONFINITE if
+ *         state outside the check: tools/doc/pages/fuzzing-soak.md); SE23_ERR_NONFINITE if
  *         the conversion from the carried state would overflow (rotating
  *         Earth: Omega x p or the covariance's shear beyond the largest
  *         real, only for absurd states, se23_gauss_from_carried); otherwise

@@ -24,7 +24,7 @@
  * up to rounding. Delta V and Delta X grow as g t and g t^2/2 and cancel
  * against Gamma' in the prediction: in the float build keep factors short
  * (a 60 s factor loses ~2e-4 relative, crosscheck_nav; 0.1-0.5 s factors are
- * the most accurate way to propagate in float, README).
+ * the most accurate way to propagate in float, tools/doc/pages/propagation.md).
  *
  * Extension. The covariance (9x9) and the bias Jacobian (9x6) of the Deltas
  * are meant to live in a wrapper that embeds se23_preint_t as its first

@@ -3,7 +3,7 @@
  * @brief Scalar, vector, matrix and group-element types of se23, and the
  *        status codes every fallible function returns.
  *
- * Conventions (also stated in se23.h and the README):
+ * Conventions (also stated in se23.h and tools/doc/pages/conventions.md):
  *  - Matrices are row-major. 3x3 as m[row][col]; 9x9 as a flat m[81] with
  *    element (i, j) at m[9*i + j].
  *  - Tangent vectors of SE_2(3) are xi = (phi, nu, rho) in R^9:

@@ -10,7 +10,7 @@
  * stack, such as the navigation filter (ins.h), passes a work area of its own
  * to the _work variant instead, in memory it owns (a static object, or a
  * member of its state, as the filter does), and the call's stack drops by
- * the size of the work area (README, "Embedding in a firmware build"). The
+ * the size of the work area (tools/doc/pages/embedding.md). The
  * results are the same bit for bit: the plain functions are the _work ones
  * with a work area on their stack. Each holds only what is live across
  * the call's covariance step (the pieces of the increment that the input

@@ -134,3 +134,21 @@ EOF
     done
 }
 check doc-fails-on-planted-symbols doc_fails_on_planted_symbols
+# The README's five-minute example (tools/doc/example.c, quoted there)
+# compiles in both precisions with the strict flags.
+for doc_d in 0 1; do
+    check "doc-example-compiles-double$doc_d" cc -std=c99 -Wall -Wextra -Wpedantic -Werror \
+        -Iinclude -Iport -DSE23_CFG_DOUBLE=$doc_d -c tools/doc/example.c \
+        -o "$BUILD/check/doc-example-$doc_d.o"
+done
+# ... and the README quotes it as it is (from its first #include on).
+doc_example_quoted() {
+    /usr/bin/python3 - "$@" <<'PY'
+import sys
+src = open("tools/doc/example.c", encoding="utf-8").read()
+body = src[src.index("#include"):]
+readme = open("README.md", encoding="utf-8").read()
+sys.exit(0 if "```c\n" + body + "```" in readme else 1)
+PY
+}
+check doc-example-quoted-current doc_example_quoted

@@ -539,7 +539,7 @@ static inline int fz_gauss_same(const se23_gauss_t *a, const se23_gauss_t *b)
  * cancels the variance of a state correlated with a measured one far below
  * the inputs' (the measured state itself is exact since the update's
  * Joseph step, issue 37: a float update with a 1-sigma of 1000 m/s
- * measured to 0.01 m/s no longer fails, README "Fuzzing"), when exact
+ * measured to 0.01 m/s no longer fails, tools/doc/pages/fuzzing-soak.md), when exact
  * measurements (R = 0) pin a state through a nearly singular S, or when an
  * input accepted within its own tolerance (an R PSD within 1e-5 of its
  * largest variance) is indefinite at the scale of the others, the result
@@ -560,8 +560,8 @@ static void fz_report_known(void)
     if (fz_known_psd != 0) {
         fprintf(fz_err_stream != NULL ? fz_err_stream : stderr,
                 "fuzz: known open finding tolerated %lu times: a covariance step "
-                "within its rounding bound, refused by se23_gauss_check (README "
-                "\"Fuzzing\"; FUZZ_STRICT_PSD=1 aborts)\n",
+                "within its rounding bound, refused by se23_gauss_check (tools/doc/pages/"
+                "fuzzing-soak.md; FUZZ_STRICT_PSD=1 aborts)\n",
                 fz_known_psd);
     }
 }

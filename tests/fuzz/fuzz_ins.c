@@ -8,7 +8,7 @@
  * taken. After every call:
  *  - the verdict is a known one; SE23_INS_FAILED (a library step refused,
  *    "should not" happen for checked inputs, but does for absurd finite
- *    ones: an initial velocity of 1e307 m/s, README "Fuzzing") leaves the
+ *    ones: an initial velocity of 1e307 m/s, tools/doc/pages/fuzzing-soak.md) leaves the
  *    state and its time as they were;
  *  - every counter is where it was or above; each se23_ins_imu call ends
  *    in exactly one imu_ counter (imu_missing and imu_seq_jumps aside),

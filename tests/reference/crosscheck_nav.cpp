@@ -185,7 +185,7 @@ void check_trajectories(Report &rep)
         // Double: issue 3 asks for 1e-9; the measured worst is ~3e-13, so the
         // bound is set 100 times tighter than the issue's. Float: a 60 s
         // factor loses more than steps do, because its Deltas grow as g t and
-        // g t^2 / 2 and cancel against Gamma' in the prediction (README).
+        // g t^2 / 2 and cancel against Gamma' in the prediction (tools/doc/pages/accuracy.md).
         Row &steps_p = rep.row("60s_steps_" + name + "_p", "rel |p|", 1e-11, 5e-4);
         Row &steps_v = rep.row("60s_steps_" + name + "_v", "rel |v|", 1e-11, 5e-4);
         Row &fac_p = rep.row("60s_factor_" + name + "_p", "rel |p|", 1e-11, 2e-3);

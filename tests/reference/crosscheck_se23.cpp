@@ -1,6 +1,6 @@
 // Cross-check of include/se23/se23.h against the Eigen reference: 10,000
 // seeded random inputs per routine plus the edge angles of issue 2. See
-// crosscheck.hpp, README "Accuracy". Usage: crosscheck_se23 [markdown-file]
+// crosscheck.hpp, tools/doc/pages/accuracy.md. Usage: crosscheck_se23 [markdown-file]
 #include "crosscheck.hpp"
 
 extern "C" {

@@ -1,7 +1,7 @@
 // Cross-check of include/se23/so3.h and the internal series coefficients
 // (src/lie/so3_series.h) against the Eigen reference: 10,000 seeded random inputs
-// per routine plus the edge angles of issue 2. See crosscheck.hpp, README
-// "Accuracy". Usage: crosscheck_so3 [markdown-output-file]
+// per routine plus the edge angles of issue 2. See crosscheck.hpp and
+// tools/doc/pages/accuracy.md. Usage: crosscheck_so3 [markdown-output-file]
 #include "crosscheck.hpp"
 
 extern "C" {

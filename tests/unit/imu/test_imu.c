@@ -369,7 +369,7 @@ static void test_imu_step_rotating_earth_keeps_body_at_rest(void **state)
      * must cancel exactly; what remains is rounding, mostly through the
      * attitude (g times the attitude error). In float the Earth rate over one
      * sample (5e-7 rad) is a few epsilons: tools/accuracy measures what that
-     * costs (README). */
+     * costs (tools/doc/pages/propagation.md). */
     const double tol_d[3] = {1e-12, 1e-9, 1e-8};
     const double tol_f[3] = {3e-4, 0.1, 2.0};
     const double *tol = SE23_CFG_DOUBLE ? tol_d : tol_f;

@@ -99,7 +99,7 @@ static void m_offset_big(se23_ins_config_t *c) { c->gnss_time_offset = SE23_R(-1
 static void m_rest_speed_neg(se23_ins_config_t *c) { c->rest_speed_max = SE23_R(-0.5); }
 static void m_rest_accel_nan(se23_ins_config_t *c) { c->rest_accel_sigma = (se23_real_t)NAN; }
 
-/* The filter's RAM as ins.h and the README state it (a firmware's budget):
+/* The filter's RAM as ins.h and tools/doc/pages/filter.md state it (a firmware's budget):
  * a fixed part plus the ring of SE23_INS_RING samples. */
 static void test_ins_memory_is_as_documented(void **state)
 {
