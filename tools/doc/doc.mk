@@ -25,3 +25,16 @@ doc: deps
 	    echo "make doc: failed (doxygen status $$rc, $$n warnings; every one must be fixed)"; \
 	    exit 1; \
 	fi
+
+# make doc-tables: the measured tables of the manual pages (per-function
+# instruction counts, stack and size on Cortex-M, the host benchmark, the
+# fuzzing executions, the soak runs), each pasted from the file its command
+# wrote into $(BUILD) between the page's <!-- table:NAME begin/end -->
+# markers (tools/doc/tables.py; `tables.py --list` names them and their
+# commands). A table whose file is missing is kept as it is. make check
+# verifies current the tables it measures itself (40-target, 45-gates,
+# 80-bench, 85-soak) and the rows of the fuzzing table (75-fuzz).
+.PHONY: doc-tables
+PY3 ?= /usr/bin/python3
+doc-tables:
+	@$(PY3) tools/doc/tables.py --build $(BUILD)
