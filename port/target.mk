@@ -356,7 +356,9 @@ bench-target: $(TGT_PLUGIN) $(foreach v,$(TGT_VARIANTS),$(TGT)/$(v)/bench.elf)
 	    $(foreach v,$(TGT_VARIANTS),$(v)=$(TGT_BOARD_$(v))=$(TGT)/$(v)/bench.elf) \
 	    --out $(TGT)/bench.md
 
-# The README tables (size, stack per function, instructions per call).
+# The tables of tools/doc/pages/cortex-m*.md (size, stack per function,
+# instructions per call, the hot path, what a firmware links), written into
+# $(TGT)/report-*.md and pasted into the pages by make doc-tables.
 .PHONY: report-target
-report-target: bench-target
+report-target: bench-target target footprint-images
 	@$(PY3) tools/target/report.py $(BUILD)

@@ -38,3 +38,24 @@ check target-bench-deterministic sh -c 'make -s bench-target BUILD="$1" >/dev/nu
     cp "$1/target/bench.md" "$1/target/bench.first.md" &&
     make -s bench-target BUILD="$1" >/dev/null &&
     cmp "$1/target/bench.md" "$1/target/bench.first.md" && cat "$1/target/bench.md"' sh "$BUILD"
+# The manual pages' tables of these figures are the ones measured now
+# (tools/doc/tables.py; make doc-tables pastes them): the instruction
+# counts, and the stack, size and hot-path tables that report.py writes
+# from them and from the gates' analysis of this build's objects.
+check target-bench-table-current /usr/bin/python3 tools/doc/tables.py --check \
+    --build "$BUILD" target-bench
+check target-report-table-current sh -c '/usr/bin/python3 tools/target/report.py "$1" \
+    --only functions && /usr/bin/python3 tools/doc/tables.py --check --build "$1" \
+    target-m4f-float target-m7-double target-hot-path' sh "$BUILD"
+# A planted stale figure (one instruction count of the page changed) fails it.
+tgt_stale_fails() {
+    ts_pages="$BUILD/check/stale-pages"
+    rm -rf "$ts_pages" && mkdir -p "$ts_pages" &&
+        sed '/table:target-bench begin/,/table:target-bench end/ s/^\(| se23_so3_hat | \)\([0-9]\)/\11\2/' \
+            tools/doc/pages/cortex-m-functions.md >"$ts_pages/cortex-m-functions.md" &&
+        ! cmp -s tools/doc/pages/cortex-m-functions.md "$ts_pages/cortex-m-functions.md" &&
+        ! /usr/bin/python3 tools/doc/tables.py --check --build "$BUILD" --pages "$ts_pages" \
+            target-bench >"$ts_pages/out.txt" 2>&1 &&
+        cat "$ts_pages/out.txt" && grep -q '^+| se23_so3_hat ' "$ts_pages/out.txt"
+}
+check target-table-check-fails-when-stale tgt_stale_fails

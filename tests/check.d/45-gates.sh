@@ -58,3 +58,8 @@ gate_rejects gate-stack-rejects-recursion "recursion: fixture_recursion" \
     tests/target/budgets/stack.txt m4f-float --roots fixture_recursion
 # The Cortex-M port's math override header builds the library warning-free.
 check gate-port-opts make -s port-opts BUILD="$BUILD"
+# The footprint table of tools/doc/pages/cortex-m.md is the one these link
+# maps give (tools/target/report.py; make doc-tables pastes it).
+check target-footprint-table-current sh -c '/usr/bin/python3 tools/target/report.py "$1" \
+    --only footprint && /usr/bin/python3 tools/doc/tables.py --check --build "$1" \
+    target-footprint' sh "$BUILD"
