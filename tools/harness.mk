@@ -130,8 +130,7 @@ demo:
 	@sh tools/lcm/demo.sh $(H)
 
 soak: harness
-	@for v in se23-soak se23-soak-float; do for a in on off; do \
-	    $(H_BIN)/$$v --steps 10000000 --aided $$a --check-every 1000000 || exit 1; done; done
+	@sh tools/soak/table.sh run $(H_BIN) $(BUILD)/soak/soak.md --steps 10000000 --check-every 1000000
 
 demo-walk:
 	@sh tools/install-deps.sh $(BUILD)

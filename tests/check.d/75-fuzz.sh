@@ -34,6 +34,16 @@ else
             grep -q "fuzz oracle (float build)" "$FZ/strict.log"
     }
     check fuzz-oracle-can-fail fz_strict_fails
+    # The fuzzing table of tools/doc/pages/fuzzing-soak.md (make fuzz, 23
+    # minutes: its figures are not remeasured here) has one row per target
+    # built now, in make fuzz's order.
+    fz_rows() {
+        fz_names=$(cd "$FZ/bin" && ls fuzz_*) || return 1
+        # shellcheck disable=SC2086
+        set -- $fz_names
+        /usr/bin/python3 tools/doc/tables.py --rows fuzz "$@" "all $#"
+    }
+    check fuzz-table-rows fz_rows
     # The smoke runs are reproducible: two runs of the kalman target (which
     # compares addresses) reach the same coverage, features and corpus.
     fz_reached() {

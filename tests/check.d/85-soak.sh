@@ -19,5 +19,11 @@ s_deterministic() {
         grep "final state hash" "$SW/$1-a.txt" &&
         cmp "$SW/$1-a.txt" "$SW/$1-b.txt"
 }
+# The table of these runs in tools/doc/pages/fuzzing-soak.md is current
+# (tools/soak/table.sh from the four logs above; make doc-tables pastes it).
+check soak-table-current sh -c 'sh tools/soak/table.sh format "$1/soak.md" \
+    "$2"/soak-se23-soak-aided-on.log "$2"/soak-se23-soak-aided-off.log \
+    "$2"/soak-se23-soak-float-aided-on.log "$2"/soak-se23-soak-float-aided-off.log &&
+    /usr/bin/python3 tools/doc/tables.py --check --build "$3" soak-check' sh "$SW" "$LOGDIR" "$BUILD"
 check soak-deterministic-double s_deterministic se23-soak
 check soak-deterministic-float s_deterministic se23-soak-float

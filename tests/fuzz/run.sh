@@ -47,6 +47,11 @@ target_of() {
     basename "$1" | sed 's/^fuzz_//; s/-double$//; s/-float$//'
 }
 
+# commas N: N with thousands separators (1234567 -> 1,234,567).
+commas() {
+    echo "$1" | sed -e ':a' -e 's/^\([0-9]*[0-9]\)\([0-9]\{3\}\)/\1,\2/' -e 'ta'
+}
+
 # stat NAME LOG: the value of libFuzzer's final stat::NAME in LOG.
 stat() {
     sed -n "s/^stat::$1: *//p" "$2" | tail -n 1
@@ -95,6 +100,10 @@ smoke)
     ;;
 fuzz)
     found=""
+    # the table of tools/doc/pages/fuzzing-soak.md (make doc-tables pastes it)
+    md="$FZ/fuzz.md.rows"
+    : >"$md"
+    total=0
     printf '%-24s %12s %9s %8s %6s  %s\n' "target" "executions" "exec/s" "corpus" "known" \
         "result"
     for bin in $bins; do
@@ -139,6 +148,10 @@ fuzz)
         done
         printf '%-24s %12s %9s %8s %6s  %s\n' "$name" "${execs:-?}" "${rate:-?}" "$size" \
             "${known:-0}" "$result"
+        printf '| `%s` | %s | %s | %s | %s |%s\n' "$name" "$(commas "${execs:-?}")" \
+            "$(commas "${rate:-?}")" "$size" "${known:-0}" \
+            "$([ "$result" = ok ] && echo ' no crash |' || echo " $result |")" >>"$md"
+        total=$((total + ${execs:-0}))
         if [ "$result" != ok ]; then
             grep -h -m 3 -E 'fuzz oracle|ERROR: |runtime error|SUMMARY' "$log" | sed 's/^/    | /'
         fi
@@ -151,6 +164,21 @@ fuzz)
     else
         echo "no crash"
     fi
+    {
+        echo "\`make fuzz FUZZ_TIME=$N\` ($N s per target, -jobs=1 -workers=1 under" \
+            "\`${FUZZ_NICE:-no nice}\`), at commit" \
+            "$(git rev-parse --short HEAD 2>/dev/null || echo '?')$(git diff --quiet HEAD -- \
+                src include tests/fuzz 2>/dev/null || echo ' with local changes'), on" \
+            "$(uname -m) $(grep -m1 'model name' /proc/cpuinfo 2>/dev/null | sed 's/.*: //')," \
+            "$(nproc 2>/dev/null || echo '?') CPUs, $(clang --version 2>/dev/null | head -n 1):"
+        echo
+        echo "| target | executions | per second | corpus | open finding tolerated | result |"
+        echo "|---|---:|---:|---:|---:|---|"
+        cat "$md"
+        echo "| all $(wc -l <"$md" | tr -d ' ') | $(commas "$total") | | | | |"
+    } >"$FZ/fuzz.md"
+    rm -f "$md"
+    echo "table: $FZ/fuzz.md (make doc-tables pastes it into tools/doc/pages/fuzzing-soak.md)"
     ;;
 *)
     echo "run.sh: unknown mode $mode (fuzz or smoke)" >&2
