@@ -16,15 +16,13 @@
  *    gnss_ counter or held (gnss_delayed and gate_resets aside);
  *  - init and align that fail leave the filter as it was but for
  *    init_rejected (the scratch fields meas and work aside);
- *  - with SE23_INS_ST_INITIALISED, se23_ins_state gives SE23_OK only for
- *    a held state that passes se23_gauss_check (else that check's status,
- *    the known finding of fuzz.h after a step, or, for an absurd state
- *    whose user coordinates overflow, SE23_ERR_NONFINITE; nothing written
- *    on either), a state of the configured dimension that
- *    passes se23_gauss_check (but for the
- *    known finding of fuzz.h, with a bound from the configuration's ranges
- *    and the largest variance), and the time of the filter; without it,
- *    SE23_ERR_DIM;
+ *  - with SE23_INS_ST_INITIALISED, se23_ins_state gives SE23_OK (or, for
+ *    an absurd state whose user coordinates overflow, SE23_ERR_NONFINITE,
+ *    nothing written), a state of the configured dimension whose held and
+ *    user forms pass se23_gauss_check but for the known finding of fuzz.h
+ *    (a step within its rounding bound, the bound from the configuration's
+ *    ranges and the largest variance), and the time of the filter;
+ *    without it, SE23_ERR_DIM;
  *  - a factor taken passes se23_preint_unc_check;
  *  - status holds only the documented bits.
  * setup: statuses in the header's set, nothing written on an error.
@@ -232,19 +230,7 @@ static void check_state(ctx_t *c, const char *what)
         }
         return;
     }
-    if (st != SE23_OK) { /* the held state fails the check: a step's known finding */
-        FZ_REQUIRE(se23_gauss_check(&c->ins.g) == st, "%s: state of an initialised filter: %d",
-                   what, st);
-        FZ_REQUIRE(fz_untouched(&out, sizeof out) && fz_untouched(&t, sizeof t),
-                   "%s: state wrote on error", what);
-        if (!c->tainted) {
-            c->tainted = !fz_check_cov_step(&c->ins.g, ins_bound(c, c->d_before), what);
-        }
-        return;
-    }
-    /* SE23_OK: the held state passes the check, always (ins.h) */
-    FZ_REQUIRE(se23_gauss_check(&c->ins.g) == SE23_OK, "%s: OK for a state the check refuses",
-               what);
+    FZ_REQUIRE(st == SE23_OK, "%s: state of an initialised filter: %d", what, st);
     FZ_REQUIRE(out.n == (c->ins.cfg.bias_states ? 15 : 9), "%s: state of dimension %d", what,
                out.n);
     if (!c->tainted) {

@@ -277,6 +277,15 @@ static int ins_gnss(void)
 {
     return (int)se23_ins_gnss(&ins, &ins_fix);
 }
+/* Filter: the state read out (rotating Earth: the carried state converted
+ * to the user's, with its 15 x 15 covariance), as a firmware does per
+ * output. */
+static int ins_state(void)
+{
+    static se23_gauss_t out;
+    int64_t t_ns;
+    return (int)se23_ins_state(&ins, &out, &t_ns);
+}
 
 const bench_step_t bench_steps[] = {
     {"STEP mean+cov n=9 (se23_gauss_predict)", setup, step_cov9},
@@ -297,5 +306,6 @@ const bench_step_t bench_steps[] = {
      prepare_ins_zupt_only, ins_zupt},
     {"FILTER GNSS position + velocity fix now, lever arm, n=15 (se23_ins_gnss)", prepare_ins_gnss,
      ins_gnss},
+    {"FILTER state read, rotating Earth, n=15 (se23_ins_state)", prepare_ins_predict, ins_state},
 };
 const int bench_n_steps = (int)(sizeof bench_steps / sizeof bench_steps[0]);
