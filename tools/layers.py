@@ -49,7 +49,7 @@ EXPORTED = {
     "base/argcheck.h", "base/linalg.h", "base/se23_math.h", "base/trig.h",
     "lie/so3_series.h",
     "imu/imu_step.h",
-    "cov/cov_check.h", "cov/cov_chol.h", "cov/cov_step.h",
+    "cov/cov_check.h", "cov/cov_chol.h",
     # the filter's structured rest and NHC updates and the halves of the
     # general update they share
     "kalman/kalman_halves.h", "kalman/kalman_nhc.h", "kalman/kalman_rest.h",
