@@ -143,18 +143,24 @@ se23_status_t se23_align_cov(const se23_mat3_t *R, se23_real_t sigma_f, int n,
     /* P = t2 I + (y2 - t2) r r^T / |r|^2, r = R^T e_z; upper triangle,
      * mirrored. R is a rotation only to SE23_CFG_ROT_TOL: without the
      * division the variance along r, y2 + (y2 - t2)(|r|^2 - 1), went
-     * negative for y2 far below t2. */
+     * negative for y2 far below t2. The diagonal is formed without
+     * cancellation, P_ii = (t2 (r_j^2 + r_k^2) + y2 r_i^2) / |r|^2: as
+     * t2 + (y2 - t2) r_i^2 / |r|^2 it rounded to about -eps t2 for a
+     * vertical r when y2 < eps t2 (a tilt 1-sigma beyond any small angle,
+     * found by fuzz_align), a negative variance. */
     const se23_real_t tl = sigma_f / g;
     const se23_real_t t2 = tl * tl / (se23_real_t)n;
+    const se23_real_t y2 = sigma_yaw * sigma_yaw;
     const se23_vec3_t r = {{R->m[2][0], R->m[2][1], R->m[2][2]}};
-    const se23_real_t rr = (r.v[0] * r.v[0]) + (r.v[1] * r.v[1]) + (r.v[2] * r.v[2]);
-    const se23_real_t c = (sigma_yaw * sigma_yaw - t2) / rr; /* |rr - 1| <= 3 tol */
+    const se23_vec3_t rsq = {{r.v[0] * r.v[0], r.v[1] * r.v[1], r.v[2] * r.v[2]}};
+    const se23_real_t rr = rsq.v[0] + rsq.v[1] + rsq.v[2]; /* |rr - 1| <= 3 tol */
+    const se23_real_t c = (y2 - t2) / rr;
     se23_mat3_t out;
     for (int i = 0; i < 3; ++i) {
-        const se23_real_t cri = c * r.v[i];
-        out.m[i][i] = t2 + cri * r.v[i];
+        const se23_real_t others = rsq.v[(i + 1) % 3] + rsq.v[(i + 2) % 3];
+        out.m[i][i] = ((t2 * others) + (y2 * rsq.v[i])) / rr;
         for (int j = i + 1; j < 3; ++j) {
-            out.m[i][j] = cri * r.v[j];
+            out.m[i][j] = c * r.v[i] * r.v[j];
             out.m[j][i] = out.m[i][j];
         }
     }

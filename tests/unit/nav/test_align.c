@@ -338,6 +338,39 @@ static void test_align_cov_psd_at_the_rotation_tolerance(void **state)
     assert_near(q, 1e-12, 8 * SE23T_EPS, 0);
 }
 
+/* Regression (fuzz_align, both precisions): a vertical third row a few
+ * epsilons short of unit length and a tilt variance beyond y2 / eps gave
+ * the variance along r as t2 + (y2 - t2) r_z^2 / |r|^2, which rounded to
+ * about -eps t2: a negative variance, refused by se23_gauss_check. Formed
+ * as (t2 (r_x^2 + r_y^2) + y2 r_z^2) / |r|^2 it is y2. */
+static void test_align_cov_no_negative_variance_for_a_vast_tilt(void **state)
+{
+    (void)state;
+    const double ca = cos(0.9), sa = sin(0.9);
+    const se23_mat3_t R = {{{(se23_real_t)ca, (se23_real_t)-sa, 0},
+                            {(se23_real_t)sa, (se23_real_t)ca, 0},
+                            {0, 0, (se23_real_t)(1.0 - 2.0 * SE23T_EPS)}}};
+    se23_mat3_t P;
+    se23_gauss_t g;
+    assert_int_equal(se23_so3_check(&R), SE23_OK);
+    /* tilt^2 = 1e20 rad^2 (sigma_f / g = 1e10), sigma_yaw^2 = 1e-4 */
+    assert_int_equal(se23_align_cov(&R, (se23_real_t)1e10, 1, SE23_R(1), (se23_real_t)1e-2, &P),
+                     SE23_OK);
+    for (int i = 0; i < 3; ++i) {
+        assert_true(P.m[i][i] >= 0);
+    }
+    assert_near(P.m[2][2], 1e-4, 0, 8 * SE23T_EPS);
+    memset(&g, 0, sizeof g);
+    g.n = 9;
+    for (int i = 0; i < 3; ++i) {
+        g.T.R.m[i][i] = SE23_R(1);
+        for (int j = 0; j < 3; ++j) {
+            g.P.m[15 * i + j] = P.m[i][j];
+        }
+    }
+    assert_int_equal(se23_gauss_check(&g), SE23_OK);
+}
+
 static void test_align_cov_rejects_bad_input_untouched(void **state)
 {
     (void)state;
@@ -690,6 +723,7 @@ int main(void)
         cmocka_unit_test(test_align_gyrocompass_recovers_heading_without_noise),
         cmocka_unit_test(test_align_gyrocompass_monte_carlo_nav_grade),
         cmocka_unit_test(test_align_frames_agree),
+        cmocka_unit_test(test_align_cov_no_negative_variance_for_a_vast_tilt),
         cmocka_unit_test(test_align_gyrocompass_rejects_bad_input_untouched),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
